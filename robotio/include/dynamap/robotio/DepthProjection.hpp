@@ -1,0 +1,36 @@
+// Depth image → 3D points in the sensor's optical frame or in base (thesis 5.1).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "dynamap/robotio/DepthFrame.hpp"
+#include "dynamap/robotio/Rig.hpp"
+
+namespace dynamap::robotio {
+
+using PointList = std::vector<Eigen::Vector3f>;
+
+// Organised cloud (width * height, row-major) in the optical frame, NaN where depth is 0:
+// x = (u - cx) / fx * z, y = (v - cy) / fy * z, z = depth.
+[[nodiscard]] PointList DepthToOrganizedPoints(const DepthFrame& frame);
+
+// Valid points only, within [min_range, max_range] along z, in the optical frame.
+[[nodiscard]] PointList DepthToPoints(const DepthFrame& frame, double min_range_m,
+                                      double max_range_m);
+
+// Valid points of the mount's range, transformed into base with T_base_kinect.
+[[nodiscard]] PointList DepthToBasePoints(const DepthFrame& frame, const KinectMount& mount);
+
+// Every pixel with a measurement as a ray: origin and end point in the target frame,
+// `hit` false for returns beyond max range (the ray is cut at max range, no endpoint).
+struct DepthRays {
+  Eigen::Vector3f origin;
+  PointList ends;
+  std::vector<bool> hit;
+};
+[[nodiscard]] DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
+                                    const Eigen::Isometry3d& T_target_base, int stride = 1);
+
+}  // namespace dynamap::robotio

@@ -1,0 +1,75 @@
+#include "dynamap/robotio/DepthProjection.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace dynamap::robotio {
+
+PointList DepthToOrganizedPoints(const DepthFrame& frame) {
+  const Intrinsics& k = frame.intrinsics;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  PointList points(frame.depth_mm.size(), Eigen::Vector3f(nan, nan, nan));
+  for (int v = 0; v < frame.height; ++v) {
+    for (int u = 0; u < frame.width; ++u) {
+      const std::uint16_t d = frame.At(u, v);
+      if (d == 0) continue;
+      const float z = static_cast<float>(d) * 0.001f;
+      points[v * frame.width + u] =
+          Eigen::Vector3f(static_cast<float>((u - k.cx) / k.fx) * z,
+                          static_cast<float>((v - k.cy) / k.fy) * z, z);
+    }
+  }
+  return points;
+}
+
+PointList DepthToPoints(const DepthFrame& frame, double min_range_m, double max_range_m) {
+  const Intrinsics& k = frame.intrinsics;
+  const auto min_mm = static_cast<std::uint16_t>(std::max(1.0, min_range_m * 1000.0));
+  const double max_mm = max_range_m * 1000.0;
+  PointList points;
+  points.reserve(frame.depth_mm.size());
+  for (int v = 0; v < frame.height; ++v) {
+    for (int u = 0; u < frame.width; ++u) {
+      const std::uint16_t d = frame.At(u, v);
+      if (d < min_mm || d > max_mm) continue;
+      const float z = static_cast<float>(d) * 0.001f;
+      points.emplace_back(static_cast<float>((u - k.cx) / k.fx) * z,
+                          static_cast<float>((v - k.cy) / k.fy) * z, z);
+    }
+  }
+  return points;
+}
+
+PointList DepthToBasePoints(const DepthFrame& frame, const KinectMount& mount) {
+  PointList points = DepthToPoints(frame, mount.min_range_m, mount.max_range_m);
+  const Eigen::Isometry3f T = mount.T_base_kinect.cast<float>();
+  for (Eigen::Vector3f& p : points) p = T * p;
+  return points;
+}
+
+DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
+                      const Eigen::Isometry3d& T_target_base, int stride) {
+  const Intrinsics& k = frame.intrinsics;
+  const Eigen::Isometry3f T = (T_target_base * mount.T_base_kinect).cast<float>();
+  DepthRays rays;
+  rays.origin = T.translation();
+  const auto min_mm = static_cast<std::uint16_t>(std::max(1.0, mount.min_range_m * 1000.0));
+  const double max_mm = mount.max_range_m * 1000.0;
+  const float max_z = static_cast<float>(mount.max_range_m);
+  for (int v = 0; v < frame.height; v += stride) {
+    for (int u = 0; u < frame.width; u += stride) {
+      const std::uint16_t d = frame.At(u, v);
+      if (d < min_mm) continue;
+      const bool hit = d <= max_mm;
+      const Eigen::Vector3f direction(static_cast<float>((u - k.cx) / k.fx),
+                                      static_cast<float>((v - k.cy) / k.fy), 1.0f);
+      // Beyond max range: free space up to max range along the ray, no endpoint.
+      const float z = hit ? static_cast<float>(d) * 0.001f : max_z / direction.norm();
+      rays.ends.push_back(T * (direction * z));
+      rays.hit.push_back(hit);
+    }
+  }
+  return rays;
+}
+
+}  // namespace dynamap::robotio
