@@ -1,7 +1,9 @@
 #include "cli/Commands.hpp"
 
+#include "cli/PlanGridCommand.hpp"
+
 namespace dynamap::app {
 
-void RegisterCommands(CLI::App& app) { (void)app; }
+void RegisterCommands(CLI::App& app) { RegisterPlanGridCommand(app); }
 
 }  // namespace dynamap::app

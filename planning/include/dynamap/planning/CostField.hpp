@@ -1,0 +1,37 @@
+// Projected map → traversal grid: obstacles and holes inflated by the robot radius and a
+// proximity penalty that decays with the distance to them (distance transform; thesis 6.1,
+// 6.3). Also the cell-wise difference two grids hand to D* Lite as edge changes.
+#pragma once
+
+#include <vector>
+
+#include "dynamap/planning/GridMap.hpp"
+#include "dynamap/planning/TraversalGrid.hpp"
+
+namespace dynamap::planning {
+
+struct CostFieldConfig {
+  double robot_radius_m = 0.35;     // m, inscribed footprint radius: cells nearer than this
+                                    // to an obstacle or hole are blocked.
+  double proximity_range_m = 0.5;   // m beyond the radius over which the penalty decays to 0.
+  double proximity_weight = 2.0;    // Penalty at the inflated boundary (relative extra cost).
+  bool unknown_is_obstacle = true;  // Unknown cells block (and inflate) like obstacles;
+                                    // false plans optimistically through them.
+};
+
+[[nodiscard]] TraversalGrid BuildTraversalGrid(const GridMap& map, const CostFieldConfig& config);
+
+// Every passable cell penalty 0, the rest blocked (Moving AI maps, tests).
+[[nodiscard]] TraversalGrid TraversalFromPassable(int width, int height,
+                                                  const std::vector<bool>& passable);
+
+struct CellChange {
+  int index = 0;          // Row-major cell index.
+  double penalty = 0.0;   // New penalty (kInfinity = blocked).
+};
+
+// Cells whose penalty differs between two grids of the same size.
+[[nodiscard]] std::vector<CellChange> DiffGrids(const TraversalGrid& before,
+                                                const TraversalGrid& after);
+
+}  // namespace dynamap::planning

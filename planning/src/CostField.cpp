@@ -1,0 +1,61 @@
+#include "dynamap/planning/CostField.hpp"
+
+#include <cassert>
+#include <opencv2/imgproc.hpp>
+
+namespace dynamap::planning {
+
+TraversalGrid BuildTraversalGrid(const GridMap& map, const CostFieldConfig& config) {
+  TraversalGrid grid(map.width, map.height, 0.0);
+  if (map.width == 0 || map.height == 0) return grid;
+  // distanceTransform measures the distance to the nearest zero pixel: zero = source.
+  cv::Mat free_mask(map.height, map.width, CV_8UC1);
+  for (int y = 0; y < map.height; ++y) {
+    auto* row = free_mask.ptr<std::uint8_t>(y);
+    for (int x = 0; x < map.width; ++x) {
+      const CellState s = map.cells[static_cast<std::size_t>(y) * map.width + x];
+      const bool source = s == CellState::kObstacle || s == CellState::kHole ||
+                          (s == CellState::kUnknown && config.unknown_is_obstacle);
+      row[x] = source ? 0 : 255;
+    }
+  }
+  cv::Mat distance;
+  cv::distanceTransform(free_mask, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  const double radius_cells = config.robot_radius_m / map.resolution_m;
+  const double range_cells = config.proximity_range_m / map.resolution_m;
+  for (int y = 0; y < map.height; ++y) {
+    const auto* row = distance.ptr<float>(y);
+    for (int x = 0; x < map.width; ++x) {
+      const double d = row[x];
+      double& p = grid.penalty[static_cast<std::size_t>(y) * map.width + x];
+      if (free_mask.at<std::uint8_t>(y, x) == 0 || d < radius_cells) {
+        p = kInfinity;
+      } else if (range_cells > 0.0 && d < radius_cells + range_cells) {
+        p = config.proximity_weight * (1.0 - (d - radius_cells) / range_cells);
+      }
+    }
+  }
+  return grid;
+}
+
+TraversalGrid TraversalFromPassable(int width, int height, const std::vector<bool>& passable) {
+  assert(passable.size() == static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  TraversalGrid grid(width, height, 0.0);
+  for (std::size_t i = 0; i < passable.size(); ++i) {
+    if (!passable[i]) grid.penalty[i] = kInfinity;
+  }
+  return grid;
+}
+
+std::vector<CellChange> DiffGrids(const TraversalGrid& before, const TraversalGrid& after) {
+  assert(before.width == after.width && before.height == after.height);
+  std::vector<CellChange> changes;
+  for (std::size_t i = 0; i < after.penalty.size(); ++i) {
+    if (before.penalty[i] != after.penalty[i]) {
+      changes.push_back({static_cast<int>(i), after.penalty[i]});
+    }
+  }
+  return changes;
+}
+
+}  // namespace dynamap::planning
