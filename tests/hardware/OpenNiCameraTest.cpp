@@ -1,0 +1,138 @@
+// OpenNI2 cameras with no Kinect attached: the no-device error, OpenNI2's built-in software
+// device ("Dummy") for the live stream path, and a .oni file recorded from it.
+#include <gtest/gtest.h>
+
+#include <OpenNI.h>
+#include <filesystem>
+
+#include "dynamap/robotio/hardware/OpenNiCamera.hpp"
+
+namespace dynamap::robotio::hardware {
+namespace {
+
+bool HasRealCamera() {
+  const auto devices = ListOpenNiDevices();
+  return devices.ok();
+}
+
+TEST(OpenNiCamera, NoDeviceErrorSaysWhichDriverIsMissing) {
+  if (HasRealCamera()) GTEST_SKIP() << "a real OpenNI2 camera is connected";
+  const auto devices = ListOpenNiDevices();
+  ASSERT_FALSE(devices.ok());
+  EXPECT_NE(devices.error().message.find("no depth camera"), std::string::npos);
+  EXPECT_NE(devices.error().message.find("libFreenectDriver.so"), std::string::npos);
+  const auto camera = OpenNiCamera::Open(OpenNiCameraConfig{});
+  ASSERT_FALSE(camera.ok());
+  EXPECT_EQ(camera.error().message, devices.error().message);
+}
+
+TEST(OpenNiCamera, UnknownSerialIsAnError) {
+  OpenNiCameraConfig config;
+  config.device = "serial:A00361A00000000";
+  const auto camera = OpenNiCamera::Open(config);
+  ASSERT_FALSE(camera.ok());
+  EXPECT_NE(camera.error().message.find("camera"), std::string::npos);
+}
+
+TEST(OpenNiCamera, MissingRecordingNamesTheFile) {
+  OpenNiCameraConfig config;
+  config.device = "/nonexistent/run.oni";
+  const auto camera = OpenNiCamera::Open(config);
+  ASSERT_FALSE(camera.ok());
+  EXPECT_NE(camera.error().message.find("/nonexistent/run.oni"), std::string::npos);
+}
+
+TEST(OpenNiCamera, UnsupportedModeListsTheOfferedOnes) {
+  OpenNiCameraConfig config;
+  config.device = "Dummy";  // 320x240@30 only.
+  const auto camera = OpenNiCamera::Open(config);
+  ASSERT_FALSE(camera.ok());
+  EXPECT_NE(camera.error().message.find("640x480@30Hz"), std::string::npos);
+  EXPECT_NE(camera.error().message.find("320x240@30Hz"), std::string::npos);
+}
+
+TEST(OpenNiCamera, LiveStreamDeliversStampedFramesFromTwoDevices) {
+  OpenNiCameraConfig config;
+  config.device = "Dummy";
+  config.width = 320;
+  config.height = 240;
+  config.sensor_id = 1;
+  auto first = OpenNiCamera::Open(config);
+  ASSERT_TRUE(first.ok()) << first.error().message;
+  {
+    config.sensor_id = 2;
+    auto second = OpenNiCamera::Open(config);
+    ASSERT_TRUE(second.ok()) << second.error().message;
+    auto frame = (*second)->Grab(std::chrono::milliseconds(1000));
+    ASSERT_TRUE(frame.ok());
+    ASSERT_TRUE(frame->has_value());
+    EXPECT_EQ((*frame)->sensor_id, 2);
+  }
+  // Closing one camera must leave the other streaming.
+  std::int64_t last_stamp = 0;
+  for (int i = 0; i < 3; ++i) {
+    auto frame = (*first)->Grab(std::chrono::milliseconds(1000));
+    ASSERT_TRUE(frame.ok()) << frame.error().message;
+    ASSERT_TRUE(frame->has_value());
+    const DepthFrame& f = **frame;
+    EXPECT_TRUE(f.Valid());
+    EXPECT_EQ(f.width, 320);
+    EXPECT_EQ(f.sensor_id, 1);
+    EXPECT_DOUBLE_EQ(f.intrinsics.fx, 262.5);
+    EXPECT_LE(f.stamp_ns, f.received_ns);
+    EXPECT_GT(f.stamp_ns, last_stamp);
+    last_stamp = f.stamp_ns;
+  }
+}
+
+TEST(OpenNiCamera, RecordingFromOpenNiRecorderOpensAsAFileDevice) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("dynamap_hw_" + std::to_string(::getpid()) + ".oni");
+  int recorded = 0;
+  {
+    ASSERT_EQ(openni::OpenNI::initialize(), openni::STATUS_OK);
+    openni::Device device;
+    ASSERT_EQ(device.open("Dummy"), openni::STATUS_OK);
+    openni::VideoStream depth;
+    ASSERT_EQ(depth.create(device, openni::SENSOR_DEPTH), openni::STATUS_OK);
+    ASSERT_EQ(depth.start(), openni::STATUS_OK);
+    openni::Recorder recorder;
+    ASSERT_EQ(recorder.create(file.c_str()), openni::STATUS_OK);
+    ASSERT_EQ(recorder.attach(depth, false), openni::STATUS_OK);
+    ASSERT_EQ(recorder.start(), openni::STATUS_OK);
+    for (int i = 0; i < 5; ++i) {
+      openni::VideoStream* stream = &depth;
+      int ready = -1;
+      if (openni::OpenNI::waitForAnyStream(&stream, 1, &ready, 1000) != openni::STATUS_OK) break;
+      openni::VideoFrameRef frame;
+      depth.readFrame(&frame);
+      ++recorded;
+    }
+    recorder.stop();
+    recorder.destroy();
+    depth.stop();
+    depth.destroy();
+    device.close();
+  }
+  ASSERT_GT(recorded, 0);
+  OpenNiCameraConfig config;
+  config.device = file.string();
+  auto camera = OpenNiCamera::Open(config);
+  ASSERT_TRUE(camera.ok()) << camera.error().message;
+  EXPECT_TRUE((*camera)->is_file());
+  ASSERT_TRUE((*camera)->frame_count().has_value());
+  EXPECT_GT(*(*camera)->frame_count(), 0);
+  // Debian's OpenNI2 2.2 does not replay frames of a file recorded from its Dummy device
+  // (see docs/HARDWARE.md); what must hold is that the wait is bounded and any frame that
+  // does come has the recorded size.
+  auto frame = (*camera)->Grab(std::chrono::milliseconds(200));
+  ASSERT_TRUE(frame.ok()) << frame.error().message;
+  if (frame->has_value()) {
+    EXPECT_EQ((*frame)->width, 320);
+  }
+  camera.value().reset();
+  std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace dynamap::robotio::hardware
