@@ -1,0 +1,69 @@
+// Dynamic-map accuracy as DESIGN.md (Evaluation) defines it: point-wise static/dynamic/
+// associated accuracy (KTH DynamicMap benchmark) and the static map's precision and
+// completeness against true static surface samples (thesis 5.4).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+
+#include <octomap/OcTreeKey.h>
+
+#include "dynamap/mapping/DualOcTree.hpp"
+#include "dynamap/robotio/DepthFrame.hpp"
+#include "dynamap/robotio/DepthProjection.hpp"
+#include "dynamap/robotio/Rig.hpp"
+
+namespace dynamap::mapping {
+
+struct PointAccuracy {
+  std::uint64_t static_points = 0;   // Labelled static depth points seen.
+  std::uint64_t dynamic_points = 0;  // Labelled dynamic depth points seen.
+  std::uint64_t static_kept = 0;     // ... whose voxel is occupied in the final static map.
+  std::uint64_t dynamic_removed = 0; // ... whose voxel is not.
+  double static_accuracy = 0.0;      // SA = kept static / all static (1 when none).
+  double dynamic_accuracy = 0.0;     // DA = removed dynamic / all dynamic (1 when none).
+  double associated_accuracy = 0.0;  // AA = sqrt(SA * DA).
+};
+
+// Collects the labelled depth points of a run by voxel (so a long run needs memory per
+// voxel, not per point), then scores them against the final static map.
+class PointAccuracyCounter {
+ public:
+  // `stride` takes every stride-th pixel in u and v; points beyond `max_range_m` along the
+  // ray are not counted (they never enter the map).
+  PointAccuracyCounter(double resolution_m, double max_range_m, int stride);
+
+  void Add(const robotio::DepthFrame& depth, const robotio::LabelFrame& labels,
+           const robotio::KinectMount& mount, const Eigen::Isometry3d& T_map_base);
+
+  [[nodiscard]] PointAccuracy Evaluate(const DualOcTree& final_map) const;
+
+ private:
+  struct Counts {
+    std::uint64_t static_points = 0;
+    std::uint64_t dynamic_points = 0;
+  };
+  double max_range_m_;
+  int stride_;
+  DualOcTree key_frame_;  // Only for key arithmetic at the map's resolution.
+  std::unordered_map<octomap::OcTreeKey, Counts, octomap::OcTreeKey::KeyHash> counts_;
+};
+
+struct SurfaceAccuracy {
+  std::uint64_t occupied_voxels = 0;      // Occupied static leaf voxels.
+  std::uint64_t precise_voxels = 0;       // ... within one voxel of a true surface sample.
+  std::uint64_t observed_samples = 0;     // Sample voxels within one voxel of observed space.
+  std::uint64_t covered_samples = 0;      // ... within one voxel of an occupied static voxel.
+  double static_map_precision = 0.0;      // precise / occupied (0 when the map is empty).
+  double static_map_completeness = 0.0;   // covered / observed (0 when nothing observed).
+};
+
+// "Within one voxel" = in the same or one of the 26 neighbouring leaf voxels. Samples are
+// in the map frame; only samples next to observed voxels count for completeness (surfaces
+// the robot could see).
+[[nodiscard]] SurfaceAccuracy EvaluateStaticSurfaces(const DualOcTree& map,
+                                                     const robotio::PointList& surface_samples);
+
+}  // namespace dynamap::mapping

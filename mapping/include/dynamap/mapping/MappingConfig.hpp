@@ -1,0 +1,46 @@
+// Settings of the dual static/dynamic map and its scan preprocessing (thesis 4.2, 5.3),
+// with the YAML parser that checks every key and range.
+#pragma once
+
+#include <string>
+
+#include "dynamap/robotio/ConfigReader.hpp"
+#include "dynamap/robotio/Expected.hpp"
+
+namespace dynamap::mapping {
+
+enum class UpdateMode {
+  kDynamic,  // Tables 4.1/4.2: people and moved objects go to the dynamic channel.
+  kRegular,  // Algorithm 2: standard occupancy update of the static channel only.
+};
+
+struct MappingConfig {
+  double resolution_m = 0.05;  // m, edge of a leaf voxel.
+  // m, measured along the ray from the sensor: longer rays clear free space up to this
+  // distance and set no hit.
+  double max_range_m = 4.0;
+  UpdateMode update = UpdateMode::kDynamic;  // Inverse sensor model (YAML: dynamic|regular).
+  double prob_low = 0.4;   // "Low" of Tables 4.1/4.2 (and Algorithm 2's free), in (0, 0.5).
+  double prob_high = 0.7;  // "High" of Tables 4.1/4.2 (and Algorithm 2's hit), in (0.5, 1).
+  double clamp_min = 0.1192;  // Lower probability clamp of both channels (OctoMap default).
+  double clamp_max = 0.971;   // Upper probability clamp of both channels (OctoMap default).
+  // A voxel is occupied in a channel when its probability is >= this (OctoMap's rule);
+  // it also splits a known static voxel into free / occupied for the tables.
+  double occupancy_threshold = 0.5;
+  double voxel_filter_m = 0.05;  // m, leaf of the preprocessing voxel grid (base frame).
+};
+
+[[nodiscard]] const char* UpdateModeName(UpdateMode mode);
+
+// Parses a `mapping:` mapping (all keys optional; defaults as above). Throws
+// robotio::ConfigError naming the file, key and allowed range.
+[[nodiscard]] MappingConfig ParseMappingConfig(robotio::ConfigNode& node);
+
+// Checks the relations between fields that single-key ranges cannot express
+// (low < 0.5 < high, clamp_min < clamp_max, ...); the message names `source`.
+[[nodiscard]] robotio::Status ValidateMappingConfig(const MappingConfig& config,
+                                                    const std::string& source);
+
+[[nodiscard]] robotio::Expected<MappingConfig> LoadMappingConfig(const std::string& file);
+
+}  // namespace dynamap::mapping

@@ -1,0 +1,31 @@
+// Scan preprocessing before registration (thesis 5.3): both Kinects' depth → points in
+// base through the rig → voxel-grid filter → drop points in dynamic-occupied voxels.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "dynamap/mapping/DualMap.hpp"
+#include "dynamap/robotio/DepthFrame.hpp"
+#include "dynamap/robotio/DepthProjection.hpp"
+#include "dynamap/robotio/Rig.hpp"
+
+namespace dynamap::mapping {
+
+// One point per occupied voxel of edge `leaf_m` (the centroid of its points), PCL's
+// VoxelGrid; non-finite points are dropped. leaf_m <= 0 returns the input.
+[[nodiscard]] robotio::PointList VoxelGridFilter(const robotio::PointList& points, double leaf_m);
+
+// Keeps the points (base frame) whose voxel, seen from base pose T_map_base, is not
+// occupied in the dynamic map.
+[[nodiscard]] robotio::PointList RemoveDynamicPoints(const robotio::PointList& points_base,
+                                                     const DualMap& map,
+                                                     const Eigen::Isometry3d& T_map_base);
+
+// The whole step for one time instant: frames[i] from rig.kinects[frames[i].sensor_id],
+// merged in base, filtered with config.voxel_filter_m, dynamic points removed.
+[[nodiscard]] robotio::PointList PreprocessScan(const std::vector<robotio::DepthFrame>& frames,
+                                                const robotio::Rig& rig, const DualMap& map,
+                                                const Eigen::Isometry3d& T_map_base);
+
+}  // namespace dynamap::mapping

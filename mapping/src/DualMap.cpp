@@ -1,0 +1,89 @@
+#include "dynamap/mapping/DualMap.hpp"
+
+#include <octomap/octomap_utils.h>
+
+#include <algorithm>
+
+namespace dynamap::mapping {
+
+DualMap::DualMap(const MappingConfig& config)
+    : config_(config),
+      rules_(UpdateRules::FromConfig(config)),
+      tree_(std::make_unique<DualOcTree>(config.resolution_m)) {
+  ApplyConfigToTree();
+}
+
+DualMap::DualMap(std::unique_ptr<DualOcTree> tree, const MappingConfig& config)
+    : config_(config), rules_(UpdateRules::FromConfig(config)), tree_(std::move(tree)) {
+  config_.resolution_m = tree_->getResolution();
+  ApplyConfigToTree();
+}
+
+void DualMap::ApplyConfigToTree() {
+  tree_->setOccupancyThres(config_.occupancy_threshold);
+  tree_->setClampingThresMin(config_.clamp_min);
+  tree_->setClampingThresMax(config_.clamp_max);
+  tree_->setProbHit(config_.prob_high);
+  tree_->setProbMiss(config_.prob_low);
+}
+
+ScanStatistics DualMap::InsertRays(const robotio::DepthRays& rays) {
+  return integrator_.Insert(*tree_, rays, rules_);
+}
+
+ScanStatistics DualMap::InsertDepthFrame(const robotio::DepthFrame& frame,
+                                         const robotio::KinectMount& mount,
+                                         const Eigen::Isometry3d& T_map_base) {
+  robotio::KinectMount limited = mount;
+  limited.max_range_m = std::min(mount.max_range_m, config_.max_range_m);
+  return InsertRays(robotio::DepthToRays(frame, limited, T_map_base));
+}
+
+ScanStatistics DualMap::InsertPointCloud(const robotio::PointList& points_map,
+                                         const Eigen::Vector3f& origin_map) {
+  return InsertRays(RaysFromPoints(points_map, origin_map, config_.max_range_m));
+}
+
+const DualOcTreeNode* DualMap::Find(const Eigen::Vector3f& p_map) const {
+  octomap::OcTreeKey key;
+  if (!tree_->coordToKeyChecked(octomap::point3d(p_map.x(), p_map.y(), p_map.z()), key)) {
+    return nullptr;
+  }
+  return tree_->search(key);  // A pruned ancestor answers for its whole cube.
+}
+
+VoxelState DualMap::StaticState(const Eigen::Vector3f& p_map) const {
+  const DualOcTreeNode* node = Find(p_map);
+  if (node == nullptr) return VoxelState::kUnknown;
+  return tree_->IsStaticOccupied(*node) ? VoxelState::kOccupied : VoxelState::kFree;
+}
+
+VoxelState DualMap::DynamicState(const Eigen::Vector3f& p_map) const {
+  const DualOcTreeNode* node = Find(p_map);
+  if (node == nullptr) return VoxelState::kUnknown;
+  return tree_->IsDynamicOccupied(*node) ? VoxelState::kOccupied : VoxelState::kFree;
+}
+
+robotio::DepthRays RaysFromPoints(const robotio::PointList& points_map,
+                                  const Eigen::Vector3f& origin_map, double max_range_m) {
+  robotio::DepthRays rays;
+  rays.origin = origin_map;
+  rays.ends.reserve(points_map.size());
+  rays.hit.reserve(points_map.size());
+  const float max_range = static_cast<float>(max_range_m);
+  for (const Eigen::Vector3f& p : points_map) {
+    if (!p.allFinite()) continue;
+    const Eigen::Vector3f d = p - origin_map;
+    const float length = d.norm();
+    if (length <= max_range) {
+      rays.ends.push_back(p);
+      rays.hit.push_back(true);
+    } else {
+      rays.ends.push_back(origin_map + d * (max_range / length));
+      rays.hit.push_back(false);
+    }
+  }
+  return rays;
+}
+
+}  // namespace dynamap::mapping

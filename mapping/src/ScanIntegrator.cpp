@@ -1,0 +1,225 @@
+#include "dynamap/mapping/ScanIntegrator.hpp"
+
+#include <algorithm>
+
+namespace dynamap::mapping {
+namespace {
+
+constexpr unsigned kTreeDepth = 16;
+constexpr unsigned kBlockDepth = kTreeDepth - 3;  // Depth of the 8x8x8 block's subtree root.
+constexpr std::size_t kMaxDenseCells = std::size_t{1} << 22;
+
+// Spreads the 3 low bits of v to bits 0, 3, 6.
+constexpr std::uint32_t Spread3(std::uint32_t v) {
+  return (v & 1u) | ((v & 2u) << 2) | ((v & 4u) << 4);
+}
+
+// Morton index of a voxel inside its block; the top 3 bits are the child index at depth
+// 14, as octomap::computeChildIdx orders them (x = 1, y = 2, z = 4).
+inline std::uint32_t InBlockIndex(const octomap::OcTreeKey& key) {
+  return Spread3(key[0] & 7u) | (Spread3(key[1] & 7u) << 1) | (Spread3(key[2] & 7u) << 2);
+}
+
+std::uint64_t Interleave13(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+  std::uint64_t code = 0;
+  for (int bit = 12; bit >= 0; --bit) {
+    code = (code << 3) | ((x >> bit) & 1u) | (((y >> bit) & 1u) << 1) | (((z >> bit) & 1u) << 2);
+  }
+  return code;
+}
+
+// Child `index` of `node`, created when absent. A childless node that existed before this
+// scan is a pruned inner node standing for eight equal children: it is expanded so that
+// only the observed child changes. `*is_new` says whether the child was never observed.
+DualOcTreeNode* Descend(DualOcTree& tree, DualOcTreeNode* node, bool node_is_new,
+                        unsigned index, bool* is_new) {
+  if (tree.nodeChildExists(node, index)) {
+    *is_new = false;
+    return tree.getNodeChild(node, index);
+  }
+  if (!node_is_new && !tree.nodeHasChildren(node)) {
+    tree.expandNode(node);
+    *is_new = false;
+    return tree.getNodeChild(node, index);
+  }
+  *is_new = true;
+  return tree.createNodeChild(node, index);
+}
+
+// Once all children of an inner node are final: collapse eight equal leaves, otherwise
+// take the children's maxima in both channels.
+void Finish(DualOcTree& tree, DualOcTreeNode* node, bool allow_prune) {
+  if (!tree.nodeHasChildren(node)) return;
+  if (allow_prune && tree.pruneNode(node)) return;
+  node->updateOccupancyChildren();
+}
+
+}  // namespace
+
+void ScanIntegrator::PrepareIndex(const octomap::OcTreeKey& min_key,
+                                  const octomap::OcTreeKey& max_key) {
+  blocks_.clear();
+  last_slot_ = -1;
+  last_block_id_ = ~0ull;
+  std::size_t cells = 1;
+  for (int a = 0; a < 3; ++a) {
+    box_min_[a] = static_cast<std::uint16_t>(min_key[a] >> 3);
+    box_dims_[a] = static_cast<std::uint32_t>((max_key[a] >> 3) - box_min_[a] + 1);
+    cells *= box_dims_[a];
+  }
+  use_dense_ = cells <= kMaxDenseCells;
+  if (use_dense_) {
+    dense_index_.assign(cells, -1);
+  } else {
+    sparse_index_.clear();
+  }
+}
+
+ScanIntegrator::Block& ScanIntegrator::BlockFor(const octomap::OcTreeKey& key) {
+  const std::uint32_t bx = key[0] >> 3, by = key[1] >> 3, bz = key[2] >> 3;
+  const std::uint64_t id = (std::uint64_t{bx} << 32) | (std::uint64_t{by} << 16) | bz;
+  if (id == last_block_id_) return blocks_[static_cast<std::size_t>(last_slot_)];
+  std::int32_t* slot = nullptr;
+  if (use_dense_) {
+    const std::size_t cell =
+        (static_cast<std::size_t>(bz - box_min_[2]) * box_dims_[1] + (by - box_min_[1])) *
+            box_dims_[0] +
+        (bx - box_min_[0]);
+    slot = &dense_index_[cell];
+  } else {
+    slot = &sparse_index_.try_emplace(id, -1).first->second;
+  }
+  if (*slot < 0) {
+    *slot = static_cast<std::int32_t>(blocks_.size());
+    Block& block = blocks_.emplace_back();
+    block.coords[0] = static_cast<std::uint16_t>(bx);
+    block.coords[1] = static_cast<std::uint16_t>(by);
+    block.coords[2] = static_cast<std::uint16_t>(bz);
+    block.morton = Interleave13(bx, by, bz);
+  }
+  last_block_id_ = id;
+  last_slot_ = *slot;
+  return blocks_[static_cast<std::size_t>(*slot)];
+}
+
+ScanStatistics ScanIntegrator::Insert(DualOcTree& tree, const robotio::DepthRays& rays,
+                                      const UpdateRules& rules) {
+  ScanStatistics stats;
+  stats.rays = rays.ends.size();
+  const octomap::point3d origin(rays.origin.x(), rays.origin.y(), rays.origin.z());
+  octomap::OcTreeKey origin_key;
+  if (!tree.coordToKeyChecked(origin, origin_key)) return stats;
+
+  // End voxels and the box that holds every ray (a ray's voxels lie between its ends).
+  end_keys_.resize(rays.ends.size());
+  octomap::OcTreeKey min_key = origin_key, max_key = origin_key;
+  std::vector<bool> valid(rays.ends.size(), false);
+  for (std::size_t i = 0; i < rays.ends.size(); ++i) {
+    const Eigen::Vector3f& p = rays.ends[i];
+    if (!tree.coordToKeyChecked(octomap::point3d(p.x(), p.y(), p.z()), end_keys_[i])) continue;
+    valid[i] = true;
+    for (int a = 0; a < 3; ++a) {
+      min_key[a] = std::min(min_key[a], end_keys_[i][a]);
+      max_key[a] = std::max(max_key[a], end_keys_[i][a]);
+    }
+  }
+  PrepareIndex(min_key, max_key);
+
+  unique_ends_.clear();
+  for (std::size_t i = 0; i < rays.ends.size(); ++i) {
+    if (!valid[i]) continue;
+    const octomap::OcTreeKey& key = end_keys_[i];
+    Block& block = BlockFor(key);
+    const std::uint32_t bit = InBlockIndex(key);
+    const std::uint64_t mask = std::uint64_t{1} << (bit & 63u);
+    if (rays.hit[i]) block.hit[bit >> 6] |= mask;
+    if ((block.end[bit >> 6] & mask) == 0) {
+      block.end[bit >> 6] |= mask;
+      unique_ends_.push_back(key);
+    }
+  }
+
+  // Free space: one trace per distinct end voxel, to its centre (OctoMap's discretise).
+  stats.traced_rays = unique_ends_.size();
+  for (const octomap::OcTreeKey& end_key : unique_ends_) {
+    if (!tree.computeRayKeys(origin, tree.keyToCoord(end_key), key_ray_)) continue;
+    for (const octomap::OcTreeKey& key : key_ray_) {
+      Block& block = BlockFor(key);
+      const std::uint32_t bit = InBlockIndex(key);
+      block.free[bit >> 6] |= std::uint64_t{1} << (bit & 63u);
+    }
+  }
+  UpdateTree(tree, rules, &stats);
+  return stats;
+}
+
+void ScanIntegrator::UpdateTree(DualOcTree& tree, const UpdateRules& rules,
+                                ScanStatistics* stats) {
+  if (blocks_.empty()) return;
+  order_.resize(blocks_.size());
+  for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<std::int32_t>(i);
+  std::sort(order_.begin(), order_.end(), [this](std::int32_t a, std::int32_t b) {
+    return blocks_[static_cast<std::size_t>(a)].morton < blocks_[static_cast<std::size_t>(b)].morton;
+  });
+
+  // path[d] is the node at depth d on the way to the current block.
+  DualOcTreeNode* path[kBlockDepth + 1] = {};
+  bool path_new[kBlockDepth + 1] = {};
+  path_new[0] = tree.MutableRoot() == nullptr;
+  path[0] = tree.CreateRoot();
+  const Block* previous = nullptr;
+
+  for (const std::int32_t slot : order_) {
+    const Block& block = blocks_[static_cast<std::size_t>(slot)];
+    unsigned common = 0;  // Deepest depth whose node the previous block shares.
+    if (previous != nullptr) {
+      const std::uint32_t diff = (block.coords[0] ^ previous->coords[0]) |
+                                 (block.coords[1] ^ previous->coords[1]) |
+                                 (block.coords[2] ^ previous->coords[2]);
+      int highest = 12;
+      while (highest > 0 && ((diff >> highest) & 1u) == 0) --highest;
+      common = static_cast<unsigned>(12 - highest);
+      for (unsigned d = kBlockDepth; d > common; --d) Finish(tree, path[d], true);
+    }
+    for (unsigned d = common; d < kBlockDepth; ++d) {
+      const unsigned bit = 12 - d;
+      const unsigned index = ((block.coords[0] >> bit) & 1u) | (((block.coords[1] >> bit) & 1u) << 1) |
+                             (((block.coords[2] >> bit) & 1u) << 2);
+      path[d + 1] = Descend(tree, path[d], path_new[d], index, &path_new[d + 1]);
+    }
+
+    DualOcTreeNode* block_node = path[kBlockDepth];
+    for (unsigned c1 = 0; c1 < 8; ++c1) {
+      const std::uint64_t observed = block.free[c1] | block.hit[c1];
+      if (observed == 0) continue;
+      bool new14 = false;
+      DualOcTreeNode* n14 = Descend(tree, block_node, path_new[kBlockDepth], c1, &new14);
+      for (unsigned c2 = 0; c2 < 8; ++c2) {
+        const unsigned byte = static_cast<unsigned>((observed >> (c2 * 8)) & 0xffu);
+        if (byte == 0) continue;
+        bool new15 = false;
+        DualOcTreeNode* n15 = Descend(tree, n14, new14, c2, &new15);
+        for (unsigned c3 = 0; c3 < 8; ++c3) {
+          if (((byte >> c3) & 1u) == 0) continue;
+          bool leaf_new = false;
+          DualOcTreeNode* leaf = Descend(tree, n15, new15, c3, &leaf_new);
+          const bool hit = ((block.hit[c1] >> (c2 * 8 + c3)) & 1u) != 0;
+          const DualLogOdds next = ApplyObservation(
+              {leaf->StaticLogOdds(), leaf->DynamicLogOdds()}, !leaf_new,
+              hit ? Observation::kOccupied : Observation::kFree, rules);
+          leaf->SetStaticLogOdds(next.static_log_odds);
+          leaf->SetDynamicLogOdds(next.dynamic_log_odds);
+          ++(hit ? stats->hit_voxels : stats->free_voxels);
+        }
+        Finish(tree, n15, true);
+      }
+      Finish(tree, n14, true);
+    }
+    previous = &block;
+  }
+  // The root is never pruned (OctoMap keeps it too).
+  for (unsigned d = kBlockDepth; d > 0; --d) Finish(tree, path[d], true);
+  Finish(tree, path[0], false);
+}
+
+}  // namespace dynamap::mapping

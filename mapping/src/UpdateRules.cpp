@@ -1,0 +1,53 @@
+#include "dynamap/mapping/UpdateRules.hpp"
+
+#include <octomap/octomap_utils.h>
+
+#include <algorithm>
+
+namespace dynamap::mapping {
+
+UpdateRules UpdateRules::FromConfig(const MappingConfig& config) {
+  UpdateRules rules;
+  rules.mode = config.update;
+  rules.low = octomap::logodds(config.prob_low);
+  rules.high = octomap::logodds(config.prob_high);
+  rules.clamp_min = octomap::logodds(config.clamp_min);
+  rules.clamp_max = octomap::logodds(config.clamp_max);
+  rules.threshold = octomap::logodds(config.occupancy_threshold);
+  return rules;
+}
+
+float StaticIncrement(StaticState previous, Observation z, const UpdateRules& r) {
+  if (z == Observation::kFree) return r.low;
+  // Something appearing where free space was seen before is not static.
+  return previous == StaticState::kFree ? r.low : r.high;
+}
+
+float DynamicIncrement(StaticState previous, Observation z, const UpdateRules& r) {
+  if (z == Observation::kFree) return r.low;
+  // Only an occupied observation of known free space is evidence of motion.
+  return previous == StaticState::kFree ? r.high : r.low;
+}
+
+StaticState ClassifyStatic(float static_log_odds, const UpdateRules& rules) {
+  return static_log_odds >= rules.threshold ? StaticState::kOccupied : StaticState::kFree;
+}
+
+DualLogOdds ApplyObservation(DualLogOdds previous, bool known, Observation z,
+                             const UpdateRules& rules) {
+  DualLogOdds next = known ? previous : DualLogOdds{};
+  if (rules.mode == UpdateMode::kRegular) {
+    next.static_log_odds += z == Observation::kOccupied ? rules.high : rules.low;
+    if (!known) next.dynamic_log_odds = rules.clamp_min;
+  } else {
+    const StaticState state =
+        known ? ClassifyStatic(previous.static_log_odds, rules) : StaticState::kUnknown;
+    next.static_log_odds += StaticIncrement(state, z, rules);
+    next.dynamic_log_odds += DynamicIncrement(state, z, rules);
+  }
+  next.static_log_odds = std::clamp(next.static_log_odds, rules.clamp_min, rules.clamp_max);
+  next.dynamic_log_odds = std::clamp(next.dynamic_log_odds, rules.clamp_min, rules.clamp_max);
+  return next;
+}
+
+}  // namespace dynamap::mapping

@@ -1,0 +1,201 @@
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "ReferenceIntegrator.hpp"
+#include "SyntheticScene.hpp"
+#include "dynamap/mapping/DualMap.hpp"
+#include "dynamap/mapping/MapFiles.hpp"
+
+namespace dynamap::mapping {
+namespace {
+
+std::string Serialise(const DualOcTree& tree) {
+  std::ostringstream out;
+  tree.write(out);
+  return out.str();
+}
+
+// One scan of a single end point; every voxel on the way is observed free.
+robotio::DepthRays SingleRay(const Eigen::Vector3f& origin, const Eigen::Vector3f& end, bool hit) {
+  robotio::DepthRays rays;
+  rays.origin = origin;
+  rays.ends.push_back(end);
+  rays.hit.push_back(hit);
+  return rays;
+}
+
+TEST(DualOcTreeTest, SaveLoadRoundTripKeepsBothChannelsExactly) {
+  DualMap map{MappingConfig{}};
+  testing::SyntheticScene scene;
+  map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
+  scene.boxes.push_back({{1.5f, -0.2f, -0.5f}, {1.8f, 0.2f, 1.2f}});
+  map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
+  ASSERT_TRUE(map.IsDynamicOccupied({1.52f, 0.0f, 0.0f}));
+
+  const std::string file = ::testing::TempDir() + "/dual_roundtrip.ot";
+  ASSERT_TRUE(SaveDualMap(map.tree(), file));
+  auto loaded = LoadMap(file);
+  ASSERT_TRUE(loaded) << loaded.error().message;
+  EXPECT_EQ((*loaded)->size(), map.tree().size());
+  EXPECT_EQ(Serialise(**loaded), Serialise(map.tree()));
+  // Compare node by node too: both channels of every leaf.
+  std::size_t leaves = 0;
+  for (auto it = map.tree().begin_leafs(); it != map.tree().end_leafs(); ++it, ++leaves) {
+    const DualOcTreeNode* other = (*loaded)->search(it.getKey(), it.getDepth());
+    ASSERT_NE(other, nullptr);
+    EXPECT_EQ(other->StaticLogOdds(), it->StaticLogOdds());
+    EXPECT_EQ(other->DynamicLogOdds(), it->DynamicLogOdds());
+  }
+  EXPECT_GT(leaves, 100u);
+}
+
+TEST(DualOcTreeTest, InnerNodesHoldTheMaximumOfBothChannels) {
+  DualMap map{MappingConfig{}};
+  testing::SyntheticScene scene;
+  map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
+  scene.boxes.push_back({{1.5f, -0.2f, -0.5f}, {1.8f, 0.2f, 1.2f}});
+  map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
+  const DualOcTree& tree = map.tree();
+  const DualOcTreeNode* root = tree.getRoot();
+  float max_static = -1e9f, max_dynamic = -1e9f;
+  for (auto it = tree.begin_leafs(); it != tree.end_leafs(); ++it) {
+    max_static = std::max(max_static, it->StaticLogOdds());
+    max_dynamic = std::max(max_dynamic, it->DynamicLogOdds());
+  }
+  EXPECT_EQ(root->StaticLogOdds(), max_static);
+  EXPECT_EQ(root->DynamicLogOdds(), max_dynamic);
+  EXPECT_GT(max_dynamic, 0.0f);
+}
+
+// Trap: eight equal leaves are pruned into one inner node. Observing one of them must
+// expand it so that only that voxel changes, in both channels.
+TEST(DualOcTreeTest, ObservingOneVoxelOfAPrunedNodeChangesOnlyThatVoxel) {
+  DualMap map{MappingConfig{}};
+  DualOcTree& tree = map.tree();
+  // Eight known-free leaves of one 2x2x2 cube at the origin, pruned into their parent.
+  const octomap::OcTreeKey corner = tree.coordToKey(octomap::point3d(0.01f, 0.01f, 0.01f));
+  DualOcTreeNode* node = tree.CreateRoot();
+  for (unsigned depth = 0; depth < 15; ++depth) {
+    node = tree.createNodeChild(node, octomap::computeChildIdx(corner, static_cast<int>(15 - depth)));
+  }
+  for (unsigned i = 0; i < 8; ++i) {
+    DualOcTreeNode* leaf = tree.createNodeChild(node, i);
+    leaf->SetStaticLogOdds(-0.4f);
+    leaf->SetDynamicLogOdds(-0.4f);
+  }
+  tree.updateInnerOccupancy();
+  tree.prune();
+  ASSERT_FALSE(tree.nodeHasChildren(node));
+
+  // A hit in the corner voxel, the ray coming from -x (outside the cube).
+  const octomap::point3d target = tree.keyToCoord(corner);
+  map.InsertRays(SingleRay({-1.0f, target.y(), target.z()}, {target.x(), target.y(), target.z()}, true));
+  const DualOcTreeNode* hit = tree.search(corner);
+  ASSERT_NE(hit, nullptr);
+  EXPECT_FLOAT_EQ(hit->StaticLogOdds(), -0.4f + map.rules().low);    // Free + hit: Low.
+  EXPECT_FLOAT_EQ(hit->DynamicLogOdds(), -0.4f + map.rules().high);  // Free + hit: High.
+  EXPECT_TRUE(tree.IsDynamicOccupied(*hit));
+  for (unsigned i = 1; i < 8; ++i) {
+    const octomap::OcTreeKey sibling(corner[0] + (i & 1u), corner[1] + ((i >> 1) & 1u),
+                                     corner[2] + ((i >> 2) & 1u));
+    const DualOcTreeNode* other = tree.search(sibling);
+    ASSERT_NE(other, nullptr);
+    EXPECT_EQ(other->StaticLogOdds(), -0.4f);
+    EXPECT_EQ(other->DynamicLogOdds(), -0.4f);
+  }
+}
+
+TEST(DualOcTreeTest, PrunedNodesExpandCorrectlyWhenBuiltDirectly) {
+  // Eight equal children pruned by OctoMap's own prune(): the parent carries both values.
+  DualOcTree tree(0.1);
+  DualOcTreeNode* root = tree.CreateRoot();
+  DualOcTreeNode* node = root;
+  for (unsigned d = 0; d < 15; ++d) node = tree.createNodeChild(node, 0);
+  for (unsigned i = 0; i < 8; ++i) {
+    DualOcTreeNode* leaf = tree.createNodeChild(node, i);
+    leaf->SetStaticLogOdds(-1.0f);
+    leaf->SetDynamicLogOdds(2.0f);
+  }
+  tree.updateInnerOccupancy();
+  tree.prune();
+  EXPECT_FALSE(tree.nodeHasChildren(node));
+  EXPECT_EQ(node->StaticLogOdds(), -1.0f);
+  EXPECT_EQ(node->DynamicLogOdds(), 2.0f);
+  tree.expandNode(node);
+  for (unsigned i = 0; i < 8; ++i) EXPECT_EQ(tree.getNodeChild(node, i)->DynamicLogOdds(), 2.0f);
+}
+
+// Trap: OctoMap's updateNode returns early when the occupancy is clamped. A static value
+// at its clamp must not stop the dynamic channel from changing.
+TEST(DualOcTreeTest, ClampedStaticValueDoesNotStopTheDynamicUpdate) {
+  DualMap map{MappingConfig{}};
+  const Eigen::Vector3f origin(0, 0, 0), end(1.025f, 0.025f, 0.025f);
+  // Observed free many times: the static value sits at the lower clamp.
+  for (int i = 0; i < 30; ++i) map.InsertRays(SingleRay(origin, end * 2.0f, false));
+  const DualOcTree& tree = map.tree();
+  const DualOcTreeNode* node = tree.search(end.x(), end.y(), end.z());
+  ASSERT_NE(node, nullptr);
+  ASSERT_EQ(node->StaticLogOdds(), map.rules().clamp_min);
+  map.InsertRays(SingleRay(origin, end, true));
+  node = tree.search(end.x(), end.y(), end.z());
+  EXPECT_EQ(node->StaticLogOdds(), map.rules().clamp_min);
+  EXPECT_FLOAT_EQ(node->DynamicLogOdds(), map.rules().clamp_min + map.rules().high);
+}
+
+TEST(DualOcTreeTest, HitBeatsTraversalWithinOneScan) {
+  DualMap map{MappingConfig{}};
+  const Eigen::Vector3f origin(0, 0, 0);
+  robotio::DepthRays rays;
+  rays.origin = origin;
+  rays.ends = {Eigen::Vector3f(1.02f, 0.02f, 0.02f), Eigen::Vector3f(2.02f, 0.02f, 0.02f)};
+  rays.hit = {true, true};
+  map.InsertRays(rays);
+  // The first end voxel lies on the second ray: still a hit (unknown + occupied = static).
+  EXPECT_TRUE(map.IsStaticOccupied({1.02f, 0.02f, 0.02f}));
+  EXPECT_TRUE(map.IsStaticOccupied({2.02f, 0.02f, 0.02f}));
+  EXPECT_EQ(map.StaticState({0.52f, 0.02f, 0.02f}), VoxelState::kFree);
+}
+
+TEST(DualOcTreeTest, RaysBeyondMaxRangeClearUpToItWithoutAHit) {
+  MappingConfig config;
+  config.max_range_m = 2.0;
+  DualMap map{config};
+  map.InsertPointCloud({Eigen::Vector3f(3.02f, 0.02f, 0.02f)}, Eigen::Vector3f(0, 0, 0));
+  EXPECT_EQ(map.StaticState({1.52f, 0.02f, 0.02f}), VoxelState::kFree);
+  EXPECT_EQ(map.StaticState({3.02f, 0.02f, 0.02f}), VoxelState::kUnknown);
+  EXPECT_EQ(map.StaticState({2.52f, 0.02f, 0.02f}), VoxelState::kUnknown);
+}
+
+TEST(DualOcTreeTest, NeverObservedVoxelsAreUnknown) {
+  DualMap map{MappingConfig{}};
+  EXPECT_EQ(map.StaticState({1, 1, 1}), VoxelState::kUnknown);
+  EXPECT_EQ(map.DynamicState({1, 1, 1}), VoxelState::kUnknown);
+  map.InsertRays(SingleRay({0, 0, 0}, {1.02f, 0.02f, 0.02f}, true));
+  EXPECT_EQ(map.StaticState({0.02f, 1.02f, 0.02f}), VoxelState::kUnknown);
+}
+
+// The batched update equals the plain reference on a scene with a person moving through
+// it, in both modes, scan after scan (structure, pruning and every value).
+TEST(DualOcTreeTest, BatchedUpdateEqualsTheReferenceImplementation) {
+  for (UpdateMode mode : {UpdateMode::kDynamic, UpdateMode::kRegular}) {
+    MappingConfig config;
+    config.update = mode;
+    config.resolution_m = 0.1;
+    DualMap fast{config};
+    DualOcTree reference(config.resolution_m);
+    testing::SyntheticScene scene;
+    for (int scan = 0; scan < 12; ++scan) {
+      scene.boxes = {{{1.5f, -1.0f + 0.15f * scan, -0.5f}, {1.8f, -0.6f + 0.15f * scan, 1.2f}}};
+      const Eigen::Vector3f origin(0.05f * scan, 0.01f * scan, 0.3f);
+      const robotio::DepthRays rays = testing::CastScan(scene, origin, 4.0f, 1.0f);
+      fast.InsertRays(rays);
+      testing::ReferenceInsert(reference, rays, fast.rules());
+      ASSERT_EQ(fast.tree().size(), reference.size()) << "scan " << scan;
+      ASSERT_EQ(Serialise(fast.tree()), Serialise(reference)) << "scan " << scan;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace dynamap::mapping

@@ -1,0 +1,126 @@
+#include <gtest/gtest.h>
+
+#include "SyntheticScene.hpp"
+#include "dynamap/mapping/DualMap.hpp"
+#include "dynamap/mapping/MapEvaluation.hpp"
+#include "dynamap/mapping/MapExport.hpp"
+#include "dynamap/mapping/Preprocessing.hpp"
+
+namespace dynamap::mapping {
+namespace {
+
+// The robot watches a wall; after a few empty scans a person walks across and stops.
+DualMap WalkThrough(UpdateMode mode) {
+  MappingConfig config;
+  config.update = mode;
+  DualMap map{config};
+  testing::SyntheticScene scene;
+  const Eigen::Vector3f origin(0.0f, 0.0f, 0.3f);
+  for (int scan = 0; scan < 5; ++scan) map.InsertRays(testing::CastScan(scene, origin, 4.0f));
+  for (int step = 0; step <= 13; ++step) {
+    const float y = -1.0f + 0.1f * step;  // Ends at y in [0.3, 0.6], in view.
+    scene.boxes = {{{1.6f, y, -0.5f}, {1.9f, y + 0.3f, 1.2f}}};
+    map.InsertRays(testing::CastScan(scene, origin, 4.0f));
+  }
+  for (int scan = 0; scan < 3; ++scan) map.InsertRays(testing::CastScan(scene, origin, 4.0f));
+  return map;
+}
+
+TEST(DynamicSceneTest, PersonWalkingThroughEndsInTheDynamicMapNotTheStaticOne) {
+  const DualMap map = WalkThrough(UpdateMode::kDynamic);
+  const Eigen::Vector3f person_front(1.62f, 0.42f, 0.32f);  // Where the person stands now.
+  EXPECT_TRUE(map.IsDynamicOccupied(person_front));
+  EXPECT_FALSE(map.IsStaticOccupied(person_front));
+  const Eigen::Vector3f passed(1.62f, -0.48f, 0.32f);  // Where the person walked through.
+  EXPECT_FALSE(map.IsStaticOccupied(passed));
+  const Eigen::Vector3f wall(3.02f, 0.52f, 0.32f);
+  EXPECT_TRUE(map.IsStaticOccupied(wall));
+  EXPECT_FALSE(map.IsDynamicOccupied(wall));
+}
+
+TEST(DynamicSceneTest, RegularUpdateKeepsThePersonInTheMap) {
+  const DualMap map = WalkThrough(UpdateMode::kRegular);
+  EXPECT_TRUE(map.IsStaticOccupied({1.62f, 0.42f, 0.32f}));
+  EXPECT_FALSE(map.IsDynamicOccupied({1.62f, 0.42f, 0.32f}));
+  EXPECT_TRUE(map.IsStaticOccupied({3.02f, 0.52f, 0.32f}));
+}
+
+TEST(DynamicSceneTest, PreprocessingDropsPointsInDynamicVoxels) {
+  const DualMap map = WalkThrough(UpdateMode::kDynamic);
+  // Base frame = map frame here (identity pose).
+  const robotio::PointList points = {Eigen::Vector3f(1.62f, 0.42f, 0.32f),
+                                     Eigen::Vector3f(3.02f, 0.52f, 0.32f)};
+  const robotio::PointList kept = RemoveDynamicPoints(points, map, Eigen::Isometry3d::Identity());
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0], points[1]);
+}
+
+TEST(DynamicSceneTest, VoxelGridLeavesOnePointPerVoxel) {
+  robotio::PointList points;
+  for (int i = 0; i < 10; ++i) points.emplace_back(0.01f + 0.001f * i, 0.01f, 0.01f);
+  points.emplace_back(0.51f, 0.01f, 0.01f);
+  const robotio::PointList filtered = VoxelGridFilter(points, 0.1);
+  ASSERT_EQ(filtered.size(), 2u);
+}
+
+TEST(DynamicSceneTest, PointAccuracyScoresKeptStaticAndRemovedDynamicPoints) {
+  const DualMap map = WalkThrough(UpdateMode::kDynamic);
+  // A tiny 2x1 depth frame seeing the wall (static) and the person (dynamic), from a
+  // kinect at the origin looking along map x (optical z).
+  robotio::DepthFrame depth;
+  depth.width = 2;
+  depth.height = 1;
+  depth.intrinsics.fx = depth.intrinsics.fy = 1.0;
+  depth.intrinsics.cx = 0.0;
+  depth.intrinsics.cy = 0.0;
+  robotio::KinectMount mount;
+  mount.T_base_kinect.linear() = robotio::BodyFromOptical();
+  mount.T_base_kinect.translation() = Eigen::Vector3d(0.0, 0.0, 0.32);
+  // Pixel u=0: straight ahead to the wall; u=1 would look right (-y): not used for depth.
+  depth.depth_mm = {3020, 0};
+  robotio::LabelFrame labels;
+  labels.width = 2;
+  labels.height = 1;
+  labels.labels = {1, 0};
+  PointAccuracyCounter counter(map.config().resolution_m, 4.0, 1);
+  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
+  // The person: a second frame from the kinect yawed towards (1.62, 0.42).
+  robotio::KinectMount turned = mount;
+  const double yaw = std::atan2(0.42, 1.62);
+  turned.T_base_kinect.linear() =
+      Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * robotio::BodyFromOptical();
+  depth.depth_mm = {static_cast<std::uint16_t>(std::hypot(1.63, 0.42) * 1000.0), 0};
+  labels.labels = {static_cast<std::uint16_t>(2 | robotio::LabelFrame::kDynamicBit), 0};
+  counter.Add(depth, labels, turned, Eigen::Isometry3d::Identity());
+  const PointAccuracy accuracy = counter.Evaluate(map.tree());
+  EXPECT_EQ(accuracy.static_points, 1u);
+  EXPECT_EQ(accuracy.dynamic_points, 1u);
+  EXPECT_DOUBLE_EQ(accuracy.static_accuracy, 1.0);
+  EXPECT_DOUBLE_EQ(accuracy.dynamic_accuracy, 1.0);
+  EXPECT_DOUBLE_EQ(accuracy.associated_accuracy, 1.0);
+}
+
+TEST(DynamicSceneTest, SurfacePrecisionAndCompletenessAgainstTrueSamples) {
+  const DualMap map = WalkThrough(UpdateMode::kDynamic);
+  // True wall samples in the sensor's view (and some far outside it).
+  robotio::PointList samples;
+  for (float y = -2.0f; y <= 2.0f; y += 0.025f) {
+    for (float z = -0.5f; z <= 1.6f; z += 0.025f) samples.emplace_back(3.0f, y, z);
+  }
+  robotio::PointList with_unseen = samples;
+  with_unseen.emplace_back(-5.0f, -5.0f, 0.0f);
+  const SurfaceAccuracy wall_only = EvaluateStaticSurfaces(map.tree(), with_unseen);
+  EXPECT_GT(wall_only.static_map_completeness, 0.95);
+  // Precision: the floor is static too but not among these samples, so precision is the
+  // wall's share of the static voxels.
+  EXPECT_GT(wall_only.static_map_precision, 0.1);
+  EXPECT_LT(wall_only.static_map_precision, 0.9);
+  for (float x = 0.0f; x <= 3.0f; x += 0.025f) {
+    for (float y = -2.0f; y <= 2.0f; y += 0.025f) samples.emplace_back(x, y, -0.5f);
+  }
+  const SurfaceAccuracy with_floor = EvaluateStaticSurfaces(map.tree(), samples);
+  EXPECT_GT(with_floor.static_map_precision, 0.97);
+}
+
+}  // namespace
+}  // namespace dynamap::mapping

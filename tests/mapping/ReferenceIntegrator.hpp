@@ -1,0 +1,14 @@
+// A deliberately plain implementation of the dual-map scan rules (hash sets of keys, one
+// root-to-leaf walk per voxel, a full bottom-up aggregation and pruning pass at the end),
+// which the batched ScanIntegrator must reproduce exactly.
+#pragma once
+
+#include "dynamap/mapping/DualOcTree.hpp"
+#include "dynamap/mapping/UpdateRules.hpp"
+#include "dynamap/robotio/DepthProjection.hpp"
+
+namespace dynamap::mapping::testing {
+
+void ReferenceInsert(DualOcTree& tree, const robotio::DepthRays& rays, const UpdateRules& rules);
+
+}  // namespace dynamap::mapping::testing

@@ -1,0 +1,28 @@
+// A small analytic scene for mapping tests: a wall, a floor and box-shaped people, seen by
+// a fan of rays from a sensor origin (no simulator needed).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "dynamap/robotio/DepthProjection.hpp"
+
+namespace dynamap::mapping::testing {
+
+struct Box {
+  Eigen::Vector3f min;
+  Eigen::Vector3f max;
+};
+
+struct SyntheticScene {
+  float wall_x = 3.0f;     // Wall plane x = wall_x (m).
+  float floor_z = -0.5f;   // Floor plane z = floor_z (m).
+  std::vector<Box> boxes;  // People / furniture.
+};
+
+// Rays from `origin` over yaw [-30, 30] and pitch [-25, 20] degrees at `step_deg`; each
+// ray ends at the nearest surface, or is cut at `max_range` with no hit.
+robotio::DepthRays CastScan(const SyntheticScene& scene, const Eigen::Vector3f& origin,
+                            float max_range, float step_deg = 0.5f);
+
+}  // namespace dynamap::mapping::testing

@@ -1,0 +1,106 @@
+#include <gtest/gtest.h>
+
+#include "dynamap/mapping/UpdateRules.hpp"
+
+namespace dynamap::mapping {
+namespace {
+
+class UpdateRulesTest : public ::testing::Test {
+ protected:
+  UpdateRules rules_ = UpdateRules::FromConfig(MappingConfig{});
+};
+
+// Table 4.1, one test per row: (previous static state, observation) -> Low/High.
+TEST_F(UpdateRulesTest, StaticTableRows) {
+  EXPECT_EQ(StaticIncrement(StaticState::kFree, Observation::kFree, rules_), rules_.low);
+  EXPECT_EQ(StaticIncrement(StaticState::kUnknown, Observation::kFree, rules_), rules_.low);
+  EXPECT_EQ(StaticIncrement(StaticState::kOccupied, Observation::kFree, rules_), rules_.low);
+  EXPECT_EQ(StaticIncrement(StaticState::kFree, Observation::kOccupied, rules_), rules_.low);
+  EXPECT_EQ(StaticIncrement(StaticState::kUnknown, Observation::kOccupied, rules_), rules_.high);
+  EXPECT_EQ(StaticIncrement(StaticState::kOccupied, Observation::kOccupied, rules_), rules_.high);
+}
+
+// Table 4.2.
+TEST_F(UpdateRulesTest, DynamicTableRows) {
+  EXPECT_EQ(DynamicIncrement(StaticState::kFree, Observation::kFree, rules_), rules_.low);
+  EXPECT_EQ(DynamicIncrement(StaticState::kUnknown, Observation::kFree, rules_), rules_.low);
+  EXPECT_EQ(DynamicIncrement(StaticState::kOccupied, Observation::kFree, rules_), rules_.low);
+  EXPECT_EQ(DynamicIncrement(StaticState::kFree, Observation::kOccupied, rules_), rules_.high);
+  EXPECT_EQ(DynamicIncrement(StaticState::kUnknown, Observation::kOccupied, rules_), rules_.low);
+  EXPECT_EQ(DynamicIncrement(StaticState::kOccupied, Observation::kOccupied, rules_), rules_.low);
+}
+
+TEST_F(UpdateRulesTest, LowAndHighAreTheConfiguredProbabilitiesAsLogOdds) {
+  MappingConfig config;
+  config.prob_low = 0.3;
+  config.prob_high = 0.8;
+  const UpdateRules rules = UpdateRules::FromConfig(config);
+  EXPECT_NEAR(rules.low, std::log(0.3 / 0.7), 1e-6);
+  EXPECT_NEAR(rules.high, std::log(0.8 / 0.2), 1e-6);
+}
+
+TEST_F(UpdateRulesTest, UnknownVoxelStartsFromThePrior) {
+  const DualLogOdds next =
+      ApplyObservation({5.0f, 5.0f}, /*known=*/false, Observation::kOccupied, rules_);
+  EXPECT_FLOAT_EQ(next.static_log_odds, rules_.high);
+  EXPECT_FLOAT_EQ(next.dynamic_log_odds, rules_.low);
+}
+
+TEST_F(UpdateRulesTest, OccupiedObservationOfKnownFreeSpaceGoesToTheDynamicChannel) {
+  const DualLogOdds next = ApplyObservation({-1.0f, -1.0f}, true, Observation::kOccupied, rules_);
+  EXPECT_FLOAT_EQ(next.static_log_odds, -1.0f + rules_.low);
+  EXPECT_FLOAT_EQ(next.dynamic_log_odds, -1.0f + rules_.high);
+}
+
+TEST_F(UpdateRulesTest, BothChannelsAreClamped) {
+  const DualLogOdds up = ApplyObservation({rules_.clamp_max, rules_.clamp_min}, true,
+                                          Observation::kOccupied, rules_);
+  EXPECT_FLOAT_EQ(up.static_log_odds, rules_.clamp_max);
+  EXPECT_FLOAT_EQ(up.dynamic_log_odds, rules_.clamp_min);
+  const DualLogOdds down = ApplyObservation({rules_.clamp_min, rules_.clamp_max - 0.1f}, true,
+                                            Observation::kOccupied, rules_);
+  EXPECT_FLOAT_EQ(down.static_log_odds, rules_.clamp_min);  // Free + occupied = Low.
+  EXPECT_FLOAT_EQ(down.dynamic_log_odds, rules_.clamp_max);
+}
+
+TEST_F(UpdateRulesTest, RegularModeIsAlgorithm2AndNeverDynamic) {
+  MappingConfig config;
+  config.update = UpdateMode::kRegular;
+  const UpdateRules rules = UpdateRules::FromConfig(config);
+  const DualLogOdds hit = ApplyObservation({-1.0f, rules.clamp_min}, true, Observation::kOccupied, rules);
+  EXPECT_FLOAT_EQ(hit.static_log_odds, -1.0f + rules.high);
+  EXPECT_FLOAT_EQ(hit.dynamic_log_odds, rules.clamp_min);
+  const DualLogOdds fresh = ApplyObservation({}, false, Observation::kFree, rules);
+  EXPECT_FLOAT_EQ(fresh.static_log_odds, rules.low);
+  EXPECT_FLOAT_EQ(fresh.dynamic_log_odds, rules.clamp_min);
+}
+
+TEST(MappingConfigTest, ParsesYamlAndRejectsBadValuesNamingTheKey) {
+  auto parse = [](const std::string& text) {
+    return robotio::ParseYamlText<MappingConfig>(text, "test.yaml", [](robotio::ConfigNode& root) {
+      robotio::ConfigNode node = root.Child("mapping");
+      return ParseMappingConfig(node);
+    });
+  };
+  auto ok = parse("mapping:\n  resolution_m: 0.1\n  update: regular\n  prob_low: 0.35\n");
+  ASSERT_TRUE(ok) << ok.error().message;
+  EXPECT_DOUBLE_EQ(ok->resolution_m, 0.1);
+  EXPECT_EQ(ok->update, UpdateMode::kRegular);
+  EXPECT_DOUBLE_EQ(ok->prob_low, 0.35);
+
+  auto bad_range = parse("mapping:\n  prob_high: 0.4\n");
+  ASSERT_FALSE(bad_range);
+  EXPECT_NE(bad_range.error().message.find("test.yaml"), std::string::npos);
+  EXPECT_NE(bad_range.error().message.find("prob_high"), std::string::npos);
+
+  auto bad_choice = parse("mapping:\n  update: sometimes\n");
+  ASSERT_FALSE(bad_choice);
+  EXPECT_NE(bad_choice.error().message.find("update"), std::string::npos);
+
+  auto unknown = parse("mapping:\n  resolutoin_m: 0.1\n");
+  ASSERT_FALSE(unknown);
+  EXPECT_NE(unknown.error().message.find("resolutoin_m"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace dynamap::mapping
