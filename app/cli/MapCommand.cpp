@@ -1,0 +1,244 @@
+#include "cli/MapCommand.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli/CommandSupport.hpp"
+#include "cli/ProgressLine.hpp"
+#include "dynamap/mapping/DualMap.hpp"
+#include "dynamap/mapping/MapEvaluation.hpp"
+#include "dynamap/mapping/MapExport.hpp"
+#include "dynamap/mapping/MapFiles.hpp"
+#include "dynamap/mapping/PointCloudFiles.hpp"
+#include "dynamap/robotio/Pose2D.hpp"
+#include "dynamap/robotio/RecordingReader.hpp"
+#include "dynamap/robotio/sim/RobotConfig.hpp"
+#include "dynamap/robotio/sim/StaticSurfaces.hpp"
+#include "dynamap/robotio/sim/WorldLoader.hpp"
+
+namespace dynamap::app {
+namespace {
+
+constexpr const char* kCommand = "map";
+namespace fs = std::filesystem;
+
+struct MapOptions {
+  std::string log;
+  std::string out;
+  std::string poses = "groundtruth";
+  std::string update = "dynamic";
+  double resolution_m = 0.05;
+  double max_range_m = 4.0;
+  int eval_stride = 2;
+  std::string robot = "robots/segway_rmp50.yaml";
+};
+
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::time_point since) {
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+void Check(const robotio::Status& status) {
+  if (!status) FailCommand(kCommand, status.error().message);
+}
+
+robotio::Trajectory SelectPoses(const robotio::RecordingReader& reader, const MapOptions& o) {
+  if (o.poses == "groundtruth") {
+    if (reader.ground_truth().empty()) {
+      FailCommand(kCommand, reader.dir() + ": no groundtruth.txt; use --poses odometry");
+    }
+    return reader.ground_truth();
+  }
+  if (reader.odometry().empty()) FailCommand(kCommand, reader.dir() + ": no odometry.txt");
+  const std::string robot_file = fs::exists(o.robot) ? o.robot : ResourcePath(o.robot);
+  auto robot = robotio::sim::LoadRobotConfig(robot_file);
+  if (!robot) FailCommand(kCommand, robot.error().message);
+  return IntegrateWheelOdometry(reader.odometry(), robot->track_width_m);
+}
+
+// The recording's world, for the true static surfaces; nullopt when it has none.
+std::optional<robotio::PointList> SurfaceSamples(const robotio::RecordingReader& reader,
+                                                 double spacing_m) {
+  if (reader.meta().world.empty()) return std::nullopt;
+  auto world = robotio::sim::LoadWorld(reader.meta().world);
+  if (!world) FailCommand(kCommand, world.error().message);
+  if (reader.meta().duration_s > 0.0) world->duration_s = reader.meta().duration_s;
+  return robotio::sim::SampleStaticSurfaces(*world, spacing_m);
+}
+
+void RunMap(const MapOptions& o) {
+  const auto start = Clock::now();
+  auto opened = robotio::RecordingReader::Open(o.log);
+  if (!opened) FailCommand(kCommand, opened.error().message);
+  const robotio::RecordingReader& reader = *opened;
+  const robotio::Trajectory poses = SelectPoses(reader, o);
+
+  mapping::MappingConfig config;
+  config.resolution_m = o.resolution_m;
+  config.max_range_m = o.max_range_m;
+  config.update = o.update == "regular" ? mapping::UpdateMode::kRegular
+                                        : mapping::UpdateMode::kDynamic;
+  Check(mapping::ValidateMappingConfig(config, "command line"));
+  mapping::DualMap map(config);
+  const bool labelled = !reader.label_entries().empty();
+  mapping::PointAccuracyCounter accuracy(config.resolution_m, config.max_range_m, o.eval_stride);
+
+  std::error_code ec;
+  fs::create_directories(o.out, ec);
+  if (ec) FailCommand(kCommand, o.out + ": cannot create the output directory: " + ec.message());
+
+  double load_s = 0.0, project_s = 0.0, insert_s = 0.0, label_s = 0.0;
+  std::size_t frames = 0, skipped = 0;
+  const auto& entries = reader.depth_entries();
+  ProgressLine progress("mapping");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    auto t = Clock::now();
+    auto frame = reader.LoadDepth(entries[i]);
+    if (!frame) FailCommand(kCommand, frame.error().message);
+    load_s += Seconds(t);
+    const auto sensor = static_cast<std::size_t>(frame->sensor_id);
+    if (sensor >= reader.rig().kinects.size()) {
+      ++skipped;
+      continue;
+    }
+    robotio::KinectMount mount = reader.rig().kinects[sensor];
+    mount.max_range_m = std::min(mount.max_range_m, config.max_range_m);
+    const Eigen::Isometry3d T_map_base = PoseAtStamp(poses, frame->stamp_ns);
+    t = Clock::now();
+    const robotio::DepthRays rays = robotio::DepthToRays(*frame, mount, T_map_base);
+    project_s += Seconds(t);
+    t = Clock::now();
+    map.InsertRays(rays);
+    insert_s += Seconds(t);
+    ++frames;
+    if (labelled) {
+      t = Clock::now();
+      if (auto labels = reader.LoadLabels(entries[i])) accuracy.Add(*frame, *labels, mount, T_map_base);
+      label_s += Seconds(t);
+    }
+    progress.Update(static_cast<double>(i + 1) / static_cast<double>(entries.size()),
+                    std::to_string(i + 1) + "/" + std::to_string(entries.size()) + " frames");
+  }
+  progress.Finish(std::to_string(frames) + " frames");
+
+  auto t = Clock::now();
+  const fs::path out(o.out);
+  Check(mapping::SaveDualMap(map.tree(), (out / "map.ot").string()));
+  Check(mapping::ExportBinary(map.tree(), mapping::MapChannel::kStatic, (out / "static.bt").string()));
+  Check(mapping::ExportBinary(map.tree(), mapping::MapChannel::kDynamic, (out / "dynamic.bt").string()));
+  const robotio::PointList static_points = mapping::OccupiedVoxelCentres(map.tree(), mapping::MapChannel::kStatic);
+  const robotio::PointList dynamic_points = mapping::OccupiedVoxelCentres(map.tree(), mapping::MapChannel::kDynamic);
+  Check(mapping::WritePly(static_points, (out / "static.ply").string()));
+  Check(mapping::WritePcd(static_points, (out / "static.pcd").string()));
+  Check(mapping::WritePly(dynamic_points, (out / "dynamic.ply").string()));
+  Check(mapping::WritePcd(dynamic_points, (out / "dynamic.pcd").string()));
+  if (map.tree().getRoot() != nullptr) Check(mapping::WriteTopDownPng(map.tree(), (out / "topdown.png").string()));
+  const double write_s = Seconds(t);
+
+  nlohmann::json report = {
+      {"command", "map"},
+      {"log", reader.dir()},
+      {"poses", o.poses},
+      {"update", o.update},
+      {"resolution_m", config.resolution_m},
+      {"max_range_m", config.max_range_m},
+      {"frames", frames},
+      {"frames_skipped", skipped},
+      {"map_nodes", map.tree().size()},
+      {"static_occupied_voxels", static_points.size()},
+      {"dynamic_occupied_voxels", dynamic_points.size()},
+  };
+  t = Clock::now();
+  if (labelled) {
+    const mapping::PointAccuracy a = accuracy.Evaluate(map.tree());
+    report["static_accuracy"] = a.static_accuracy;
+    report["dynamic_accuracy"] = a.dynamic_accuracy;
+    report["associated_accuracy"] = a.associated_accuracy;
+    report["static_points"] = a.static_points;
+    report["dynamic_points"] = a.dynamic_points;
+    report["evaluation_pixel_stride"] = o.eval_stride;
+  }
+  if (const auto samples = SurfaceSamples(reader, config.resolution_m / 2.0)) {
+    const mapping::SurfaceAccuracy s = mapping::EvaluateStaticSurfaces(map.tree(), *samples);
+    report["static_map_precision"] = s.static_map_precision;
+    report["static_map_completeness"] = s.static_map_completeness;
+  }
+  const double evaluate_s = Seconds(t) + label_s;
+  report["timings_s"] = {{"load", load_s},         {"project", project_s},
+                         {"insert", insert_s},     {"evaluate", evaluate_s},
+                         {"write", write_s},       {"total", Seconds(start)}};
+  report["insert_scans_per_s"] = insert_s > 0.0 ? static_cast<double>(frames) / insert_s : 0.0;
+  WriteJsonReport(kCommand, report, (out / "report.json").string());
+  std::printf("%s\n", report.dump(2).c_str());
+}
+
+}  // namespace
+
+robotio::Trajectory IntegrateWheelOdometry(const std::vector<robotio::OdometryReading>& odometry,
+                                           double track_width_m) {
+  robotio::Trajectory trajectory;
+  if (odometry.empty()) return trajectory;
+  robotio::Pose2D pose;
+  trajectory.push_back(robotio::ToStampedPose(odometry.front().stamp_ns, pose));
+  for (std::size_t i = 1; i < odometry.size(); ++i) {
+    const double left = odometry[i].left_m - odometry[i - 1].left_m;
+    const double right = odometry[i].right_m - odometry[i - 1].right_m;
+    const double distance = 0.5 * (left + right);
+    const double turn = (right - left) / track_width_m;
+    pose.x += distance * std::cos(pose.theta + 0.5 * turn);
+    pose.y += distance * std::sin(pose.theta + 0.5 * turn);
+    pose.theta = robotio::WrapAngle(pose.theta + turn);
+    trajectory.push_back(robotio::ToStampedPose(odometry[i].stamp_ns, pose));
+  }
+  return trajectory;
+}
+
+Eigen::Isometry3d PoseAtStamp(const robotio::Trajectory& trajectory, std::int64_t stamp_ns) {
+  const auto after = std::lower_bound(
+      trajectory.begin(), trajectory.end(), stamp_ns,
+      [](const robotio::StampedPose& p, std::int64_t stamp) { return p.stamp_ns < stamp; });
+  if (after == trajectory.begin()) return after->pose;
+  if (after == trajectory.end()) return trajectory.back().pose;
+  const auto before = after - 1;
+  const double span = static_cast<double>(after->stamp_ns - before->stamp_ns);
+  const double s = span > 0.0 ? static_cast<double>(stamp_ns - before->stamp_ns) / span : 0.0;
+  return robotio::Interpolate(robotio::Pose2D::FromIsometry(before->pose),
+                              robotio::Pose2D::FromIsometry(after->pose), s)
+      .ToIsometry();
+}
+
+void RegisterMapCommand(CLI::App& app) {
+  auto options = std::make_shared<MapOptions>();
+  CLI::App* map = app.add_subcommand(
+      "map", "Integrate a recording into the dual static/dynamic 3D map from known poses; "
+             "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png and report.json");
+  map->add_option("--log", options->log, "Recording directory")->required();
+  map->add_option("--out", options->out, "Output directory")->required();
+  map->add_option("--poses", options->poses, "Pose source")
+      ->check(CLI::IsMember({"groundtruth", "odometry"}))
+      ->capture_default_str();
+  map->add_option("--update", options->update,
+                  "dynamic: Tables 4.1/4.2; regular: standard occupancy update")
+      ->check(CLI::IsMember({"dynamic", "regular"}))
+      ->capture_default_str();
+  map->add_option("--resolution", options->resolution_m, "Voxel edge (m)")
+      ->check(CLI::Range(0.005, 2.0))
+      ->capture_default_str();
+  map->add_option("--max-range", options->max_range_m, "Insertion range along the ray (m)")
+      ->check(CLI::Range(0.1, 100.0))
+      ->capture_default_str();
+  map->add_option("--eval-stride", options->eval_stride,
+                  "Every n-th pixel (u and v) counted for static/dynamic accuracy")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  map->add_option("--robot", options->robot, "Robot file for the track width (--poses odometry)")
+      ->capture_default_str();
+  map->callback([options] { RunMap(*options); });
+}
+
+}  // namespace dynamap::app
