@@ -1,0 +1,60 @@
+// Dual 3D map → projected 2D grid (thesis 6.1): per map column, obstacles in the robot's
+// height band (static or dynamic), holes where the floor is missing or free space shows
+// below it, navigable where floor was seen; re-projected only where a map update touched.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "dynamap/planning/GridMap.hpp"
+
+namespace dynamap::planning {
+
+enum class VoxelState { kUnknown, kFree, kOccupied };
+
+// What the projection reads from the dual static/dynamic map (mapping::DualMap offers the
+// same two queries; an adapter forwards them), so planning tests run on synthetic maps.
+class VoxelMapView {
+ public:
+  virtual ~VoxelMapView() = default;
+  [[nodiscard]] virtual double Resolution() const = 0;  // m, voxel edge.
+  [[nodiscard]] virtual VoxelState StaticState(const Eigen::Vector3f& p_map) const = 0;
+  [[nodiscard]] virtual VoxelState DynamicState(const Eigen::Vector3f& p_map) const = 0;
+};
+
+struct ProjectionConfig {
+  double robot_height_m = 0.9;   // m above the floor (map z = 0): top of robot and mounts.
+  double step_height_m = 0.08;   // m, tallest edge the base drives over; higher is obstacle.
+  double floor_band_m = 0.06;    // m, |z| within which an occupied voxel is floor evidence.
+  double hole_depth_m = 0.3;     // m below the floor band searched for free space (holes).
+};
+
+// State of the column whose centre is (x_m, y_m) in the map frame. Voxels are sampled at
+// the view's resolution: occupied above step height and up to the robot's height (static
+// or dynamic) → obstacle; else no floor and free space seen below or in the floor band →
+// hole; else floor seen → navigable; else unknown.
+[[nodiscard]] CellState ProjectColumn(const VoxelMapView& view, double x_m, double y_m,
+                                      const ProjectionConfig& config);
+
+// Holds the projected grid over a fixed area and keeps it up to date.
+class MapProjector {
+ public:
+  // `area` is the projected grid's geometry; its cells start unknown.
+  MapProjector(GridMap area, ProjectionConfig config);
+
+  // Re-projects every column (a loaded map).
+  std::vector<int> ProjectAll(const VoxelMapView& view);
+  // Re-projects only the columns containing the given map-frame points (those a map update
+  // touched); returns the indices of cells whose state changed.
+  std::vector<int> Update(const VoxelMapView& view, const std::vector<Eigen::Vector2f>& touched_xy);
+
+  [[nodiscard]] const GridMap& map() const { return map_; }
+
+ private:
+  std::vector<int> Reproject(const VoxelMapView& view, const std::vector<int>& cells);
+
+  GridMap map_;
+  ProjectionConfig config_;
+};
+
+}  // namespace dynamap::planning

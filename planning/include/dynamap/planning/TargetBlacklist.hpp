@@ -1,0 +1,40 @@
+// Places the target planner must avoid for a while: targets found unreachable, or whose
+// approach failed repeatedly (thesis 6.2), matched by distance in cells.
+#pragma once
+
+#include <vector>
+
+#include "dynamap/planning/GridMap.hpp"
+
+namespace dynamap::planning {
+
+struct TargetBlacklistConfig {
+  double duration_s = 60.0;  // s a place stays blacklisted.
+  double radius_m = 0.5;     // m, targets this close to a blacklisted place count as it.
+  int max_failures = 2;      // Failed approaches before a place is blacklisted.
+};
+
+class TargetBlacklist {
+ public:
+  TargetBlacklist(TargetBlacklistConfig config, double resolution_m)
+      : config_(config), radius_cells_(config.radius_m / resolution_m) {}
+
+  void ReportFailure(GridIndex cell, double now_s);
+  void Blacklist(GridIndex cell, double now_s);
+  [[nodiscard]] bool IsBlacklisted(GridIndex cell, double now_s) const;
+  [[nodiscard]] int ActiveCount(double now_s) const;
+
+ private:
+  struct Entry {
+    GridIndex cell;
+    int failures = 0;
+    double until_s = -1.0;  // Blacklisted while now < until_s.
+  };
+  [[nodiscard]] bool Near(GridIndex a, GridIndex b) const;
+
+  TargetBlacklistConfig config_;
+  double radius_cells_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace dynamap::planning

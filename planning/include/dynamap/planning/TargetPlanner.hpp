@@ -1,0 +1,86 @@
+// Where to go next (thesis 6.2, "based on image processing"): frontier regions (Yamauchi
+// 1997) and inspection targets found on the projected map with OpenCV imgproc, each with a
+// reachable viewpoint, scored by expected gain over path cost; blacklisting of failing
+// targets and "return to start" when nothing worth reaching remains.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dynamap/planning/GridMap.hpp"
+#include "dynamap/planning/SurfaceCoverage.hpp"
+#include "dynamap/planning/TargetBlacklist.hpp"
+#include "dynamap/planning/TraversalGrid.hpp"
+
+namespace dynamap::planning {
+
+struct TargetPlannerConfig {
+  std::string strategy = "gain";         // "gain": gain over path cost; "nearest-frontier":
+                                         // Yamauchi's closest reachable frontier (baseline).
+  double min_frontier_length_m = 0.3;    // m, frontier regions with fewer cells·resolution drop.
+  double sensor_range_m = 4.5;           // m, range within which unknown area counts as gain.
+  double viewpoint_radius_m = 1.5;       // m, farthest a frontier viewpoint may be from it.
+  double min_gain_m2 = 0.5;              // m², frontier targets revealing less are not worth it.
+  double path_cost_offset_m = 1.0;       // m added to path cost in score = gain / (cost + offset),
+                                         // so targets next to the robot do not win by ~1/0.
+  bool inspection = true;                // Also plan inspection targets.
+  double inspection_weight = 1.0;        // Score per m of unseen surface, relative to per m².
+  double min_inspection_m = 0.5;         // m of unseen surface below which a region is ignored.
+  double home_tolerance_m = 0.3;         // m, within this of the start the mission is done.
+  TargetBlacklistConfig blacklist;       // How failures turn into blacklisted places.
+};
+
+enum class TargetKind { kFrontier, kInspection, kReturnToStart, kDone };
+
+[[nodiscard]] const char* TargetKindName(TargetKind kind);
+
+struct TargetCandidate {
+  TargetKind kind = TargetKind::kFrontier;
+  GridIndex viewpoint;        // Where the robot should go.
+  GridIndex region_center;    // The region cell nearest the region's centroid.
+  int region_cells = 0;
+  double gain = 0.0;          // m² unknown area (frontier) or weighted m of surface (inspection).
+  double path_cost_m = 0.0;   // Planner cost to the viewpoint, m (proximity cost included).
+  double score = 0.0;
+};
+
+struct TargetDecision {
+  TargetKind kind = TargetKind::kDone;
+  GridIndex cell;                          // Goal cell (viewpoint or start).
+  TargetCandidate chosen;                  // Meaningful for kFrontier / kInspection.
+  std::vector<TargetCandidate> candidates; // Every scored region (for display).
+  int frontier_regions = 0;                // Regions found before dropping small ones.
+  int unreachable_regions = 0;             // Kept regions without a reachable viewpoint.
+  int blacklisted_regions = 0;             // Regions skipped for the blacklist.
+};
+
+class TargetPlanner {
+ public:
+  // `resolution_m` is the projected map's (blacklist radii are converted with it).
+  TargetPlanner(TargetPlannerConfig config, double resolution_m);
+
+  // `grid` is the traversal grid built from `map`; `home` the start cell; `coverage` may be
+  // null (no inspection targets then).
+  [[nodiscard]] TargetDecision Plan(const GridMap& map, const TraversalGrid& grid, GridIndex robot,
+                                    GridIndex home, const SurfaceCoverage* coverage,
+                                    double now_s) const;
+
+  // The runtime reports that reaching `target` failed (path blocked, timeout) or that the
+  // path planner found it unreachable; repeated failures blacklist the region for a while
+  // (by its centre, so another viewpoint of the same region is not tried right away).
+  void ReportFailure(const TargetCandidate& target, double now_s) {
+    blacklist_.ReportFailure(target.region_center, now_s);
+  }
+  void ReportUnreachable(const TargetCandidate& target, double now_s) {
+    blacklist_.Blacklist(target.region_center, now_s);
+  }
+
+  [[nodiscard]] const TargetBlacklist& blacklist() const { return blacklist_; }
+  [[nodiscard]] const TargetPlannerConfig& config() const { return config_; }
+
+ private:
+  TargetPlannerConfig config_;
+  TargetBlacklist blacklist_;
+};
+
+}  // namespace dynamap::planning

@@ -1,0 +1,239 @@
+#include "dynamap/planning/TargetPlanner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "dynamap/planning/CostToGo.hpp"
+#include "dynamap/planning/Visibility.hpp"
+
+namespace dynamap::planning {
+
+namespace {
+
+struct Region {
+  std::vector<int> cells;
+  GridIndex center;  // Region cell nearest the centroid.
+};
+
+cv::Mat MaskOf(const GridMap& map, CellState state) {
+  cv::Mat mask(map.height, map.width, CV_8UC1);
+  for (int y = 0; y < map.height; ++y) {
+    auto* row = mask.ptr<std::uint8_t>(y);
+    for (int x = 0; x < map.width; ++x) {
+      row[x] = map.cells[static_cast<std::size_t>(y) * map.width + x] == state ? 255 : 0;
+    }
+  }
+  return mask;
+}
+
+// Connected components (8-connected) of a binary mask with at least `min_cells` cells.
+std::vector<Region> Regions(const GridMap& map, const cv::Mat& mask, int min_cells, int* found) {
+  cv::Mat labels;
+  cv::Mat stats;
+  cv::Mat centroids;
+  const int n = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
+  *found = n - 1;
+  std::vector<Region> regions(static_cast<std::size_t>(n));
+  for (int y = 0; y < map.height; ++y) {
+    const int* row = labels.ptr<int>(y);
+    for (int x = 0; x < map.width; ++x) {
+      if (row[x] > 0) regions[row[x]].cells.push_back(y * map.width + x);
+    }
+  }
+  std::vector<Region> kept;
+  for (int label = 1; label < n; ++label) {
+    Region& r = regions[label];
+    if (static_cast<int>(r.cells.size()) < min_cells) continue;
+    const double cx = centroids.at<double>(label, 0);
+    const double cy = centroids.at<double>(label, 1);
+    double best = kInfinity;
+    for (const int i : r.cells) {
+      const GridIndex c = map.Cell(i);
+      const double d = (c.x - cx) * (c.x - cx) + (c.y - cy) * (c.y - cy);
+      if (d < best) {
+        best = d;
+        r.center = c;
+      }
+    }
+    kept.push_back(std::move(r));
+  }
+  return kept;
+}
+
+// No obstacle cell on the segment between two cell centres (what a sensor at `a` sees).
+bool ClearSight(const GridMap& map, GridIndex a, GridIndex b) {
+  const double dx = b.x - a.x;
+  const double dy = b.y - a.y;
+  const int steps = static_cast<int>(std::ceil(2.0 * std::max(std::abs(dx), std::abs(dy))));
+  for (int i = 1; i < steps; ++i) {
+    const double t = static_cast<double>(i) / steps;
+    const GridIndex c{static_cast<int>(std::floor(a.x + 0.5 + t * dx)),
+                      static_cast<int>(std::floor(a.y + 0.5 + t * dy))};
+    if (c != b && map.At(c) == CellState::kObstacle) return false;
+  }
+  return true;
+}
+
+// The reachable cell within `radius` of `center` that sees it and is cheapest to reach.
+struct Viewpoint {
+  bool found = false;
+  GridIndex cell;
+  double cost = kInfinity;
+};
+Viewpoint FindViewpoint(const GridMap& map, const std::vector<double>& cost_to_go,
+                        GridIndex center, double radius_cells) {
+  Viewpoint best;
+  const int r = static_cast<int>(std::ceil(radius_cells));
+  for (int y = std::max(0, center.y - r); y <= std::min(map.height - 1, center.y + r); ++y) {
+    for (int x = std::max(0, center.x - r); x <= std::min(map.width - 1, center.x + r); ++x) {
+      const double dx = x - center.x;
+      const double dy = y - center.y;
+      if (dx * dx + dy * dy > radius_cells * radius_cells) continue;
+      const double c = cost_to_go[static_cast<std::size_t>(y) * map.width + x];
+      if (c >= best.cost) continue;
+      const GridIndex cell{x, y};
+      if (!ClearSight(map, cell, center)) continue;
+      best = {true, cell, c};
+    }
+  }
+  return best;
+}
+
+// A start cell for the cost-to-go: the robot's, or the nearest free one when the robot
+// stands inside the inflated zone (after a collision-guard stop, say).
+GridIndex FreeCellNear(const TraversalGrid& grid, GridIndex robot, int radius) {
+  if (!grid.Blocked(robot)) return robot;
+  GridIndex best = robot;
+  double best_d = kInfinity;
+  for (int dy = -radius; dy <= radius; ++dy) {
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const GridIndex c{robot.x + dx, robot.y + dy};
+      const double d = dx * dx + dy * dy;
+      if (d < best_d && !grid.Blocked(c)) {
+        best_d = d;
+        best = c;
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+const char* TargetKindName(TargetKind kind) {
+  switch (kind) {
+    case TargetKind::kFrontier:
+      return "frontier";
+    case TargetKind::kInspection:
+      return "inspection";
+    case TargetKind::kReturnToStart:
+      return "return-to-start";
+    case TargetKind::kDone:
+      return "done";
+  }
+  return "done";
+}
+
+TargetPlanner::TargetPlanner(TargetPlannerConfig config, double resolution_m)
+    : config_(std::move(config)), blacklist_(config_.blacklist, resolution_m) {}
+
+TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid, GridIndex robot,
+                                   GridIndex home, const SurfaceCoverage* coverage,
+                                   double now_s) const {
+  TargetDecision decision;
+  const double res = map.resolution_m;
+  const std::vector<double> cost_to_go =
+      CostToGo(grid, FreeCellNear(grid, robot, static_cast<int>(std::ceil(0.5 / res))));
+  const bool nearest = config_.strategy == "nearest-frontier";
+
+  // Frontier pixels: navigable cells 4-adjacent to unknown (dilate unknown by a cross).
+  cv::Mat unknown = MaskOf(map, CellState::kUnknown);
+  cv::Mat frontier;
+  cv::dilate(unknown, frontier, cv::getStructuringElement(cv::MORPH_CROSS, cv::Size(3, 3)));
+  cv::bitwise_and(frontier, MaskOf(map, CellState::kNavigable), frontier);
+  const int min_frontier = std::max(1, static_cast<int>(std::ceil(config_.min_frontier_length_m / res)));
+  ViewCone cone;
+  cone.range_m = config_.sensor_range_m;
+  for (const Region& region : Regions(map, frontier, min_frontier, &decision.frontier_regions)) {
+    if (blacklist_.IsBlacklisted(region.center, now_s)) {
+      ++decision.blacklisted_regions;
+      continue;
+    }
+    const Viewpoint vp =
+        FindViewpoint(map, cost_to_go, region.center, config_.viewpoint_radius_m / res);
+    if (!vp.found) {
+      ++decision.unreachable_regions;
+      continue;
+    }
+    TargetCandidate c;
+    c.kind = TargetKind::kFrontier;
+    c.viewpoint = vp.cell;
+    c.region_center = region.center;
+    c.region_cells = static_cast<int>(region.cells.size());
+    c.path_cost_m = vp.cost * res;
+    int unknown_seen = 0;
+    for (const int i : VisibleCells(map, vp.cell, cone)) {
+      unknown_seen += map.cells[i] == CellState::kUnknown ? 1 : 0;
+    }
+    c.gain = unknown_seen * res * res;
+    c.score = nearest ? 1.0 / (c.path_cost_m + config_.path_cost_offset_m)
+                      : c.gain / (c.path_cost_m + config_.path_cost_offset_m);
+    if (nearest || c.gain >= config_.min_gain_m2) decision.candidates.push_back(c);
+  }
+
+  // Inspection: surfaces not yet seen from within the inspection distance.
+  if (!nearest && config_.inspection && coverage != nullptr) {
+    const double inspect_cells = coverage->config().inspection_distance_m / res;
+    cv::Mat unseen(map.height, map.width, CV_8UC1, cv::Scalar(0));
+    for (int i = 0; i < static_cast<int>(map.cells.size()); ++i) {
+      const GridIndex c = map.Cell(i);
+      if (!coverage->Inspected(i) && SurfaceCoverage::IsSurface(map, c)) {
+        unseen.at<std::uint8_t>(c.y, c.x) = 255;
+      }
+    }
+    int found = 0;
+    const int min_cells = std::max(1, static_cast<int>(std::ceil(config_.min_inspection_m / res)));
+    ViewCone near_cone;
+    near_cone.range_m = coverage->config().inspection_distance_m;
+    for (const Region& region : Regions(map, unseen, min_cells, &found)) {
+      if (blacklist_.IsBlacklisted(region.center, now_s)) {
+        ++decision.blacklisted_regions;
+        continue;
+      }
+      // Well inside the inspection distance, so the surface counts once seen from there.
+      const Viewpoint vp = FindViewpoint(map, cost_to_go, region.center, 0.8 * inspect_cells);
+      if (!vp.found) continue;
+      TargetCandidate c;
+      c.kind = TargetKind::kInspection;
+      c.viewpoint = vp.cell;
+      c.region_center = region.center;
+      c.region_cells = static_cast<int>(region.cells.size());
+      c.path_cost_m = vp.cost * res;
+      int surface_seen = 0;
+      for (const int i : VisibleCells(map, vp.cell, near_cone)) {
+        surface_seen += unseen.at<std::uint8_t>(i / map.width, i % map.width) != 0 ? 1 : 0;
+      }
+      c.gain = config_.inspection_weight * surface_seen * res;
+      c.score = c.gain / (c.path_cost_m + config_.path_cost_offset_m);
+      if (surface_seen * res >= config_.min_inspection_m) decision.candidates.push_back(c);
+    }
+  }
+
+  const auto best = std::max_element(
+      decision.candidates.begin(), decision.candidates.end(),
+      [](const TargetCandidate& a, const TargetCandidate& b) { return a.score < b.score; });
+  if (best != decision.candidates.end()) {
+    decision.kind = best->kind;
+    decision.cell = best->viewpoint;
+    decision.chosen = *best;
+    return decision;
+  }
+  const double home_distance = std::hypot(robot.x - home.x, robot.y - home.y) * res;
+  decision.kind = home_distance > config_.home_tolerance_m ? TargetKind::kReturnToStart
+                                                           : TargetKind::kDone;
+  decision.cell = home;
+  return decision;
+}
+
+}  // namespace dynamap::planning

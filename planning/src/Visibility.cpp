@@ -1,0 +1,39 @@
+#include "dynamap/planning/Visibility.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dynamap::planning {
+
+std::vector<int> VisibleCells(const GridMap& map, GridIndex from, const ViewCone& cone) {
+  std::vector<int> seen;
+  if (!map.Contains(from) || cone.rays <= 0) return seen;
+  const double range = cone.range_m / map.resolution_m;
+  const bool full_circle = cone.fov_rad >= 2.0 * M_PI - 1e-9;
+  const int rays = cone.rays;
+  const double step_angle = full_circle ? 2.0 * M_PI / rays : cone.fov_rad / std::max(1, rays - 1);
+  const double first = full_circle ? 0.0 : cone.heading_rad - 0.5 * cone.fov_rad;
+  // Half-cell steps from the cell centre: simple and dense enough at sensor ranges of a few
+  // metres (the ray spacing, not the step, limits what a far ray misses).
+  for (int i = 0; i < rays; ++i) {
+    const double a = first + i * step_angle;
+    const double dx = std::cos(a) * 0.5;
+    const double dy = std::sin(a) * 0.5;
+    double x = from.x + 0.5;
+    double y = from.y + 0.5;
+    for (double t = 0.0; t <= range; t += 0.5) {
+      const GridIndex c{static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y))};
+      if (!map.Contains(c)) break;
+      seen.push_back(map.Index(c));
+      const CellState s = map.At(c);
+      if (s == CellState::kObstacle) break;
+      x += dx;
+      y += dy;
+    }
+  }
+  std::sort(seen.begin(), seen.end());
+  seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+  return seen;
+}
+
+}  // namespace dynamap::planning

@@ -1,0 +1,141 @@
+// Projection of small synthetic dual maps: a table the robot fits under, a step, a hole,
+// narrow and wide doors, and a person who exists only in the dynamic map.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "dynamap/planning/AStar.hpp"
+#include "dynamap/planning/CostField.hpp"
+#include "dynamap/planning/MapProjection.hpp"
+
+namespace dynamap::planning {
+namespace {
+
+constexpr double kRes = 0.05;
+
+// An observed scene: everything inside `observed` is known (floor occupied at z in
+// [-res, 0), the rest free), static and dynamic boxes occupied, holes without floor.
+class BoxWorld : public VoxelMapView {
+ public:
+  Eigen::AlignedBox2f observed{Eigen::Vector2f(0, 0), Eigen::Vector2f(6, 4)};
+  std::vector<Eigen::AlignedBox3f> static_boxes;
+  std::vector<Eigen::AlignedBox3f> dynamic_boxes;
+  std::vector<Eigen::AlignedBox2f> holes;
+
+  double Resolution() const override { return kRes; }
+  VoxelState StaticState(const Eigen::Vector3f& p) const override {
+    if (!observed.contains(p.head<2>())) return VoxelState::kUnknown;
+    for (const auto& b : static_boxes) {
+      if (b.contains(p)) return VoxelState::kOccupied;
+    }
+    bool in_hole = false;
+    for (const auto& h : holes) in_hole = in_hole || h.contains(p.head<2>());
+    if (!in_hole && p.z() < 0.0f && p.z() >= -static_cast<float>(kRes)) return VoxelState::kOccupied;
+    if (!in_hole && p.z() < -static_cast<float>(kRes)) return VoxelState::kUnknown;  // Under floor.
+    return VoxelState::kFree;
+  }
+  VoxelState DynamicState(const Eigen::Vector3f& p) const override {
+    for (const auto& b : dynamic_boxes) {
+      if (b.contains(p)) return VoxelState::kOccupied;
+    }
+    return observed.contains(p.head<2>()) ? VoxelState::kFree : VoxelState::kUnknown;
+  }
+};
+
+Eigen::AlignedBox3f Box(float x0, float y0, float z0, float x1, float y1, float z1) {
+  return {Eigen::Vector3f(x0, y0, z0), Eigen::Vector3f(x1, y1, z1)};
+}
+
+CellState At(const BoxWorld& world, double x, double y) {
+  return ProjectColumn(world, x, y, ProjectionConfig{});
+}
+
+TEST(MapProjection, TableTheRobotFitsUnderIsNotAnObstacleButItsLegsAre) {
+  BoxWorld world;
+  world.static_boxes.push_back(Box(2.0f, 2.0f, 0.95f, 3.0f, 3.0f, 1.0f));  // Top above 0.9 m.
+  world.static_boxes.push_back(Box(2.0f, 2.0f, 0.0f, 2.06f, 2.06f, 0.95f));  // One leg.
+  EXPECT_EQ(At(world, 2.5, 2.5), CellState::kNavigable);
+  EXPECT_EQ(At(world, 2.025, 2.025), CellState::kObstacle);
+  // A lower table (top at 0.7 m) blocks.
+  world.static_boxes.push_back(Box(4.0f, 1.0f, 0.7f, 5.0f, 2.0f, 0.75f));
+  EXPECT_EQ(At(world, 4.5, 1.5), CellState::kObstacle);
+}
+
+TEST(MapProjection, StairStepIsAnObstacleAndALowSillIsNot) {
+  BoxWorld world;
+  world.static_boxes.push_back(Box(1.0f, 1.0f, 0.0f, 2.0f, 2.0f, 0.17f));  // Ascending stair.
+  world.static_boxes.push_back(Box(3.0f, 1.0f, 0.0f, 3.1f, 2.0f, 0.03f));  // Door sill.
+  EXPECT_EQ(At(world, 1.5, 1.5), CellState::kObstacle);
+  EXPECT_EQ(At(world, 3.05, 1.5), CellState::kNavigable);
+  EXPECT_EQ(At(world, 0.5, 0.5), CellState::kNavigable);
+}
+
+TEST(MapProjection, MissingFloorWithFreeSpaceBelowIsAHole) {
+  BoxWorld world;
+  world.holes.push_back({Eigen::Vector2f(4.0f, 2.0f), Eigen::Vector2f(5.0f, 3.0f)});
+  EXPECT_EQ(At(world, 4.5, 2.5), CellState::kHole);
+  EXPECT_EQ(At(world, 3.5, 2.5), CellState::kNavigable);
+  EXPECT_EQ(At(world, 7.0, 2.5), CellState::kUnknown);  // Never observed.
+}
+
+TEST(MapProjection, PersonInTheDynamicMapBlocksPlanningOnly) {
+  BoxWorld world;
+  world.dynamic_boxes.push_back(Box(3.0f, 2.0f, 0.0f, 3.4f, 2.4f, 1.8f));
+  EXPECT_EQ(At(world, 3.2, 2.2), CellState::kObstacle);
+  EXPECT_EQ(world.StaticState(Eigen::Vector3f(3.2f, 2.2f, 1.0f)), VoxelState::kFree);
+}
+
+GridMap Area() {
+  GridMap area(120, 80, kRes);
+  return area;
+}
+
+// Two rooms split by a wall at x = 3 with one door of the given width.
+BoxWorld WallWithDoor(float door_width) {
+  BoxWorld world;
+  world.static_boxes.push_back(Box(2.95f, 0.0f, 0.0f, 3.05f, 2.0f - door_width / 2, 2.5f));
+  world.static_boxes.push_back(Box(2.95f, 2.0f + door_width / 2, 0.0f, 3.05f, 4.0f, 2.5f));
+  return world;
+}
+
+bool PassesDoor(float door_width) {
+  MapProjector projector(Area(), ProjectionConfig{});
+  projector.ProjectAll(WallWithDoor(door_width));
+  CostFieldConfig cost;  // Default robot radius 0.35 m: the robot needs ~0.7 m.
+  const TraversalGrid grid = BuildTraversalGrid(projector.map(), cost);
+  return AStarSearch(grid, projector.map().CellAt(1.0, 2.0), projector.map().CellAt(5.0, 2.0))
+      .found;
+}
+
+TEST(MapProjection, NarrowDoorClosesThroughInflationAndAWideOneStaysOpen) {
+  EXPECT_FALSE(PassesDoor(0.55f));
+  EXPECT_TRUE(PassesDoor(0.9f));
+}
+
+TEST(MapProjection, UpdateReprojectsOnlyTouchedColumns) {
+  BoxWorld world;
+  MapProjector projector(Area(), ProjectionConfig{});
+  projector.ProjectAll(world);
+  const GridIndex person_cell = projector.map().CellAt(3.2, 2.2);
+  const GridIndex other_cell = projector.map().CellAt(1.2, 1.2);
+  ASSERT_EQ(projector.map().At(person_cell), CellState::kNavigable);
+  // The person steps in at (3.2, 2.2); a box also appears at (1.2, 1.2) but the map update
+  // only touched the person's columns.
+  world.dynamic_boxes.push_back(Box(3.0f, 2.0f, 0.0f, 3.4f, 2.4f, 1.8f));
+  world.static_boxes.push_back(Box(1.0f, 1.0f, 0.0f, 1.4f, 1.4f, 1.0f));
+  std::vector<Eigen::Vector2f> touched;
+  for (float x = 3.0f; x < 3.4f; x += 0.05f) {
+    for (float y = 2.0f; y < 2.4f; y += 0.05f) touched.emplace_back(x + 0.025f, y + 0.025f);
+  }
+  const std::vector<int> changed = projector.Update(world, touched);
+  EXPECT_EQ(changed.size(), 64u);
+  EXPECT_EQ(projector.map().At(person_cell), CellState::kObstacle);
+  EXPECT_EQ(projector.map().At(other_cell), CellState::kNavigable);  // Not touched yet.
+  // The person leaves: the same columns become navigable again.
+  world.dynamic_boxes.clear();
+  EXPECT_EQ(projector.Update(world, touched).size(), 64u);
+  EXPECT_EQ(projector.map().At(person_cell), CellState::kNavigable);
+}
+
+}  // namespace
+}  // namespace dynamap::planning

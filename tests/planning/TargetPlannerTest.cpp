@@ -1,0 +1,147 @@
+// Target planning on synthetic projected maps: frontier regions, the two strategies,
+// blacklisting, inspection and completion (return to start, then done).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dynamap/planning/CostField.hpp"
+#include "dynamap/planning/TargetPlanner.hpp"
+
+namespace dynamap::planning {
+namespace {
+
+constexpr double kRes = 0.1;
+
+void Fill(GridMap* map, int x0, int y0, int x1, int y1, CellState s) {
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) map->Set({x, y}, s);
+  }
+}
+
+CostFieldConfig SmallRobot() {
+  CostFieldConfig cost;
+  cost.robot_radius_m = 0.2;
+  cost.proximity_range_m = 0.2;
+  return cost;
+}
+
+TargetPlannerConfig NoInspection() {
+  TargetPlannerConfig config;
+  config.inspection = false;
+  return config;
+}
+
+// A known 4 x 3 m room (cells 10..49 x 10..39) inside unknown space, walls around it,
+// with openings: west (small unknown pocket behind it), east (large unknown area), and a
+// single unknown cell in the north wall (too small to count).
+GridMap RoomWithOpenings() {
+  GridMap map(100, 50, kRes, CellState::kUnknown);
+  Fill(&map, 9, 9, 50, 40, CellState::kObstacle);
+  Fill(&map, 10, 10, 49, 39, CellState::kNavigable);
+  Fill(&map, 9, 21, 9, 26, CellState::kUnknown);    // West opening ...
+  Fill(&map, 0, 20, 8, 27, CellState::kObstacle);   // ... into a 0.8 x 0.6 m pocket.
+  Fill(&map, 1, 21, 8, 26, CellState::kUnknown);
+  Fill(&map, 50, 15, 50, 34, CellState::kUnknown);  // East opening into the unknown.
+  map.Set({30, 40}, CellState::kUnknown);           // Pinhole in the north wall.
+  Fill(&map, 29, 41, 31, 41, CellState::kObstacle);
+  map.Set({30, 41}, CellState::kObstacle);
+  return map;
+}
+
+TEST(TargetPlanner, FindsFrontierRegionsAndDropsSmallOnes) {
+  const GridMap map = RoomWithOpenings();
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  const TargetPlanner planner(NoInspection(), kRes);
+  const TargetDecision d = planner.Plan(map, grid, {15, 24}, {15, 24}, nullptr, 0.0);
+  EXPECT_EQ(d.frontier_regions, 3);
+  ASSERT_EQ(d.candidates.size(), 2u);  // West and east; the pinhole's region is dropped.
+  EXPECT_EQ(d.kind, TargetKind::kFrontier);
+  // The east opening reveals far more unknown area; it wins under gain over path cost.
+  EXPECT_GT(d.chosen.region_center.x, 40);
+  for (const TargetCandidate& c : d.candidates) {
+    EXPECT_FALSE(grid.Blocked(c.viewpoint));
+    EXPECT_GT(c.gain, 0.0);
+  }
+}
+
+TEST(TargetPlanner, NearestFrontierStrategyTakesTheClosestRegion) {
+  const GridMap map = RoomWithOpenings();
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  TargetPlannerConfig config = NoInspection();
+  config.strategy = "nearest-frontier";
+  const TargetDecision d = TargetPlanner(config, kRes).Plan(map, grid, {15, 24}, {15, 24}, nullptr, 0.0);
+  ASSERT_EQ(d.kind, TargetKind::kFrontier);
+  EXPECT_LT(d.chosen.region_center.x, 15);  // The west pocket, although it shows less.
+}
+
+TEST(TargetPlanner, BlacklistedTargetsAreSkippedUntilTheyExpire) {
+  const GridMap map = RoomWithOpenings();
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  TargetPlanner planner(NoInspection(), kRes);
+  const TargetDecision first = planner.Plan(map, grid, {15, 24}, {15, 24}, nullptr, 0.0);
+  ASSERT_EQ(first.kind, TargetKind::kFrontier);
+  planner.ReportFailure(first.chosen, 1.0);  // One failure is forgiven ...
+  EXPECT_EQ(planner.Plan(map, grid, {15, 24}, {15, 24}, nullptr, 2.0).cell, first.cell);
+  planner.ReportFailure(first.chosen, 3.0);  // ... the second blacklists the place.
+  const TargetDecision second = planner.Plan(map, grid, {15, 24}, {15, 24}, nullptr, 4.0);
+  ASSERT_EQ(second.kind, TargetKind::kFrontier);
+  EXPECT_NE(second.chosen.region_center, first.chosen.region_center);
+  const double later = 3.0 + planner.config().blacklist.duration_s + 1.0;
+  EXPECT_EQ(planner.Plan(map, grid, {15, 24}, {15, 24}, nullptr, later).cell, first.cell);
+}
+
+TEST(TargetPlanner, UnreachableFrontierIsNotATarget) {
+  GridMap map = RoomWithOpenings();
+  Fill(&map, 40, 10, 40, 39, CellState::kObstacle);  // Wall off the east part.
+  Fill(&map, 9, 21, 9, 26, CellState::kObstacle);    // Close the west opening.
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  const TargetDecision d =
+      TargetPlanner(NoInspection(), kRes).Plan(map, grid, {20, 24}, {12, 24}, nullptr, 0.0);
+  EXPECT_EQ(d.unreachable_regions, 1);
+  EXPECT_EQ(d.kind, TargetKind::kReturnToStart);
+}
+
+TEST(TargetPlanner, FullyExploredMapMeansReturnToStartThenDone) {
+  GridMap map(60, 40, kRes, CellState::kObstacle);
+  Fill(&map, 1, 1, 58, 38, CellState::kNavigable);
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  const TargetPlanner planner(NoInspection(), kRes);
+  const GridIndex home{10, 10};
+  const TargetDecision away = planner.Plan(map, grid, {40, 30}, home, nullptr, 0.0);
+  EXPECT_EQ(away.kind, TargetKind::kReturnToStart);
+  EXPECT_EQ(away.cell, home);
+  EXPECT_EQ(planner.Plan(map, grid, {11, 10}, home, nullptr, 0.0).kind, TargetKind::kDone);
+}
+
+TEST(TargetPlanner, InspectionTargetsLeadToEverySurfaceUntilDone) {
+  // A known 8 x 6 m room with a pillar: walls far from the start must be seen from within
+  // the inspection distance before the mission can end.
+  GridMap map(80, 60, kRes, CellState::kObstacle);
+  Fill(&map, 1, 1, 78, 58, CellState::kNavigable);
+  Fill(&map, 38, 28, 41, 31, CellState::kObstacle);
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  TargetPlannerConfig config;
+  const TargetPlanner planner(config, kRes);
+  SurfaceCoverage coverage;
+  const GridIndex home{5, 5};
+  robotio::Pose2D pose{map.CenterX(5), map.CenterY(5), 0.0};
+  coverage.Observe(map, pose);
+  int visits = 0;
+  TargetDecision d;
+  for (; visits < 40; ++visits) {
+    d = planner.Plan(map, grid, map.CellAt(pose.x, pose.y), home, &coverage, 0.0);
+    if (d.kind != TargetKind::kInspection) break;
+    // Drive there and look at the region (turning on the spot towards it).
+    const GridIndex c = d.chosen.region_center;
+    pose = {map.CenterX(d.cell.x), map.CenterY(d.cell.y), 0.0};
+    pose.theta = std::atan2(map.CenterY(c.y) - pose.y, map.CenterX(c.x) - pose.x);
+    coverage.Observe(map, pose);
+  }
+  EXPECT_GT(visits, 1);
+  EXPECT_LT(visits, 40);
+  EXPECT_EQ(d.kind, TargetKind::kReturnToStart);
+  EXPECT_GT(coverage.Fraction(map), 0.9);
+}
+
+}  // namespace
+}  // namespace dynamap::planning
