@@ -1,11 +1,13 @@
 #include "cli/Commands.hpp"
 
+#include "cli/EvalTrajectoryCommand.hpp"
 #include "cli/MapCommand.hpp"
 #include "cli/PlanGridCommand.hpp"
 
 namespace dynamap::app {
 
 void RegisterCommands(CLI::App& app) {
+  RegisterEvalTrajectoryCommand(app);
   RegisterMapCommand(app);
   RegisterPlanGridCommand(app);
 }

@@ -1,0 +1,48 @@
+// Dead reckoning of the planar base from cumulative wheel distances, with the heading taken
+// from the higher-rate gyro (thesis 5.2, Algorithm 3, differential drive).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "dynamap/robotio/Pose2D.hpp"
+#include "dynamap/robotio/Readings.hpp"
+
+namespace dynamap::mapping {
+
+struct MotionModelConfig {
+  // Heading source: the gyro's yaw rate (thesis 5.2.2) or, when false or when no gyro
+  // sample falls near an interval, the wheel difference divided by the track width.
+  bool use_gyro = true;
+  double track_width_m = 0.5;       // m, distance between the wheel contact points.
+  double gyro_bias_rad_s = 0.0;     // rad/s, subtracted from every yaw rate (base z).
+  // s, a gyro sample older than this is not held over a gap (then wheels give heading).
+  double max_gyro_gap_s = 0.1;
+};
+
+struct StampedPose2D {
+  std::int64_t stamp_ns = 0;
+  robotio::Pose2D pose;  // T_odom_base: the base in the frame of the first reading.
+};
+using Trajectory2D = std::vector<StampedPose2D>;
+
+// One odometry interval [t0_ns, t1_ns]: the base's displacement expressed in its pose at
+// t0. The wheel distance is spread evenly in time (constant speed within the interval);
+// the heading follows the gyro samples, each yaw rate held until the next sample, so an
+// arc comes out as a smooth curve rather than a chord. `imu` must be sorted by stamp.
+[[nodiscard]] robotio::Pose2D DriveIncrement(double left_m, double right_m,
+                                             std::int64_t t0_ns, std::int64_t t1_ns,
+                                             const std::vector<robotio::ImuReading>& imu,
+                                             const MotionModelConfig& config);
+
+// The base pose at every odometry reading, starting at the identity at the first one.
+// Both inputs sorted by stamp.
+[[nodiscard]] Trajectory2D DeadReckon(const std::vector<robotio::OdometryReading>& odometry,
+                                      const std::vector<robotio::ImuReading>& imu,
+                                      const MotionModelConfig& config);
+
+// The pose at `stamp_ns` interpolated between the neighbouring entries; clamped to the
+// first/last entry outside the covered time. `trajectory` must not be empty.
+[[nodiscard]] robotio::Pose2D PoseAt(const Trajectory2D& trajectory, std::int64_t stamp_ns);
+
+}  // namespace dynamap::mapping
