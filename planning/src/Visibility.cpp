@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace dynamap::planning {
 
@@ -15,6 +16,11 @@ std::vector<int> VisibleCells(const GridMap& map, GridIndex from, const ViewCone
   const double first = full_circle ? 0.0 : cone.heading_rad - 0.5 * cone.fov_rad;
   // Half-cell steps from the cell centre: simple and dense enough at sensor ranges of a few
   // metres (the ray spacing, not the step, limits what a far ray misses).
+  // Deduplicate with a bitmap over the cone's bounding square rather than sorting: rays
+  // revisit cells at every half step and overlap near the origin.
+  const int r = static_cast<int>(std::ceil(range)) + 1;
+  const int side = 2 * r + 1;
+  std::vector<std::uint8_t> marked(static_cast<std::size_t>(side) * side, 0);
   for (int i = 0; i < rays; ++i) {
     const double a = first + i * step_angle;
     const double dx = std::cos(a) * 0.5;
@@ -24,15 +30,16 @@ std::vector<int> VisibleCells(const GridMap& map, GridIndex from, const ViewCone
     for (double t = 0.0; t <= range; t += 0.5) {
       const GridIndex c{static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y))};
       if (!map.Contains(c)) break;
-      seen.push_back(map.Index(c));
-      const CellState s = map.At(c);
-      if (s == CellState::kObstacle) break;
+      std::uint8_t& m = marked[static_cast<std::size_t>(c.y - from.y + r) * side + (c.x - from.x + r)];
+      if (m == 0) {
+        m = 1;
+        seen.push_back(map.Index(c));
+      }
+      if (map.At(c) == CellState::kObstacle) break;
       x += dx;
       y += dy;
     }
   }
-  std::sort(seen.begin(), seen.end());
-  seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
   return seen;
 }
 

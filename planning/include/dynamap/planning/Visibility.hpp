@@ -15,7 +15,7 @@ struct ViewCone {
   int rays = 90;                     // Rays over the opening angle.
 };
 
-// Indices of the cells seen from `from` (sorted, unique). A ray passes navigable and
+// Indices of the cells seen from `from` (each once, in no particular order). A ray passes navigable and
 // unknown cells and ends on the first obstacle (which is included: its surface is seen).
 [[nodiscard]] std::vector<int> VisibleCells(const GridMap& map, GridIndex from, const ViewCone& cone);
 

@@ -1,0 +1,47 @@
+// The dual static/dynamic OctoMap (mapping::DualMap, thesis 4.2) seen through the two
+// queries the map projection needs (thesis 6.1), plus the columns a scan touched.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "dynamap/mapping/DualMap.hpp"
+#include "dynamap/planning/MapProjection.hpp"
+#include "dynamap/robotio/DepthProjection.hpp"
+
+namespace dynamap::planning {
+
+class DualMapView : public VoxelMapView {
+ public:
+  explicit DualMapView(const mapping::DualMap& map) : map_(map) {}
+
+  [[nodiscard]] double Resolution() const override { return map_.tree().getResolution(); }
+  [[nodiscard]] VoxelState StaticState(const Eigen::Vector3f& p_map) const override {
+    return Convert(map_.StaticState(p_map));
+  }
+  [[nodiscard]] VoxelState DynamicState(const Eigen::Vector3f& p_map) const override {
+    return Convert(map_.DynamicState(p_map));
+  }
+
+ private:
+  [[nodiscard]] static VoxelState Convert(mapping::VoxelState s) {
+    switch (s) {
+      case mapping::VoxelState::kFree:
+        return VoxelState::kFree;
+      case mapping::VoxelState::kOccupied:
+        return VoxelState::kOccupied;
+      case mapping::VoxelState::kUnknown:
+        break;
+    }
+    return VoxelState::kUnknown;
+  }
+
+  const mapping::DualMap& map_;
+};
+
+// Centres (map frame x, y) of the grid columns the rays of one scan pass through, each
+// once: what MapProjector::Update needs after DualMap::InsertRays with the same rays.
+[[nodiscard]] std::vector<Eigen::Vector2f> TouchedColumns(const robotio::DepthRays& rays,
+                                                          const GridMap& area);
+
+}  // namespace dynamap::planning

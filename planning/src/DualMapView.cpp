@@ -1,0 +1,35 @@
+#include "dynamap/planning/DualMapView.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace dynamap::planning {
+
+std::vector<Eigen::Vector2f> TouchedColumns(const robotio::DepthRays& rays, const GridMap& area) {
+  std::vector<std::uint8_t> touched(area.cells.size(), 0);
+  std::vector<Eigen::Vector2f> columns;
+  const auto mark = [&](double x, double y) {
+    const GridIndex c = area.CellAt(x, y);
+    if (!area.Contains(c)) return;
+    std::uint8_t& t = touched[area.Index(c)];
+    if (t != 0) return;
+    t = 1;
+    columns.emplace_back(static_cast<float>(area.CenterX(c.x)), static_cast<float>(area.CenterY(c.y)));
+  };
+  const Eigen::Vector2d o = rays.origin.head<2>().cast<double>();
+  const double step = 0.5 * area.resolution_m;  // Half-cell steps: no column is skipped
+                                                // by more than a corner sliver.
+  for (const Eigen::Vector3f& end : rays.ends) {
+    const Eigen::Vector2d d = end.head<2>().cast<double>() - o;
+    const double length = d.norm();
+    const int steps = static_cast<int>(std::ceil(length / step));
+    for (int i = 0; i <= steps; ++i) {
+      const double t = steps == 0 ? 0.0 : static_cast<double>(i) / steps;
+      mark(o.x() + t * d.x(), o.y() + t * d.y());
+    }
+  }
+  return columns;
+}
+
+}  // namespace dynamap::planning

@@ -1,0 +1,62 @@
+// Projection through the real dual map: a scan of floor and a wall inserted into
+// mapping::DualMap, projected via DualMapView, re-projected on the columns it touched.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dynamap/mapping/DualMap.hpp"
+#include "dynamap/planning/DualMapView.hpp"
+
+namespace dynamap::planning {
+namespace {
+
+// Floor points over x in [0.3, 2.9], y in [-1, 1] and a wall at x = 2.0 for |y| < 0.5,
+// seen from a sensor 0.6 m above the origin.
+robotio::PointList FloorAndWall() {
+  robotio::PointList points;
+  for (float x = 0.3f; x < 2.9f; x += 0.02f) {
+    for (float y = -1.0f; y < 1.0f; y += 0.02f) {
+      if (x > 1.98f && std::abs(y) < 0.5f) continue;  // Behind the wall: not seen.
+      points.emplace_back(x, y, -0.01f);
+    }
+  }
+  for (float y = -0.5f; y < 0.5f; y += 0.02f) {
+    for (float z = 0.0f; z < 1.2f; z += 0.02f) points.emplace_back(2.01f, y, z);
+  }
+  return points;
+}
+
+TEST(DualMapProjection, FloorIsNavigableWallIsObstacleUnseenIsUnknown) {
+  mapping::DualMap map(mapping::MappingConfig{});
+  const Eigen::Vector3f origin(0.0f, 0.0f, 0.6f);
+  for (int i = 0; i < 3; ++i) map.InsertPointCloud(FloorAndWall(), origin);
+  const DualMapView view(map);
+  GridMap area(80, 60, view.Resolution());
+  area.origin_x_m = -1.0;
+  area.origin_y_m = -1.5;
+  MapProjector projector(area, ProjectionConfig{});
+  const robotio::DepthRays rays = mapping::RaysFromPoints(FloorAndWall(), origin, 4.0);
+  const std::vector<Eigen::Vector2f> touched = TouchedColumns(rays, projector.map());
+  EXPECT_FALSE(projector.Update(view, touched).empty());
+  const GridMap& grid = projector.map();
+  EXPECT_EQ(grid.At(grid.CellAt(1.0, 0.3)), CellState::kNavigable);
+  EXPECT_EQ(grid.At(grid.CellAt(2.02, 0.0)), CellState::kObstacle);
+  EXPECT_EQ(grid.At(grid.CellAt(2.5, 0.0)), CellState::kUnknown);  // In the wall's shadow.
+  EXPECT_EQ(grid.At(grid.CellAt(-0.8, -1.3)), CellState::kUnknown);  // No ray went there.
+  // The same scan again changes nothing, and only touched columns were looked at.
+  EXPECT_TRUE(projector.Update(view, touched).empty());
+}
+
+TEST(DualMapProjection, TouchedColumnsFollowTheRaysFootprint) {
+  GridMap area(40, 40, 0.1);
+  robotio::DepthRays rays;
+  rays.origin = Eigen::Vector3f(0.05f, 0.05f, 0.5f);
+  rays.ends = {Eigen::Vector3f(1.05f, 0.05f, 0.0f)};
+  rays.hit = {true};
+  const std::vector<Eigen::Vector2f> columns = TouchedColumns(rays, area);
+  EXPECT_EQ(columns.size(), 11u);  // Cells x = 0..10 of row 0.
+  for (const Eigen::Vector2f& c : columns) EXPECT_NEAR(c.y(), 0.05f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace dynamap::planning
