@@ -55,6 +55,7 @@ const char* SessionStepName(SessionStep step) {
 CalibrationSession::CalibrationSession(robotio::Rig guess, SessionConfig config)
     : guess_(std::move(guess)), config_(std::move(config)) {
   keyframes_.resize(guess_.kinects.size());
+  next_keyframe_ns_.assign(guess_.kinects.size(), 0);
   for (StepTally& t : tallies_) {
     t.pairs.assign(guess_.kinects.size(), 0);
     t.rejected.assign(guess_.kinects.size(), 0);
@@ -155,35 +156,48 @@ void CalibrationSession::AddFloorFrame(const robotio::DepthFrame& frame) {
 }
 
 void CalibrationSession::AddMotionFrame(const robotio::DepthFrame& frame) {
-  std::optional<Keyframe>& last = keyframes_[frame.sensor_id];
+  const int sensor = frame.sensor_id;
+  if (frame.received_ns < next_keyframe_ns_[sensor]) return;
   const std::int64_t interval_ns = robotio::SecondsToNanos(config_.keyframe_interval_s);
-  if (last && frame.received_ns - last->received_ns < interval_ns) return;
-  const robotio::KinectMount& mount = guess_.kinects[frame.sensor_id];
+  next_keyframe_ns_[sensor] = (frame.received_ns / interval_ns + 1) * interval_ns;
+  const robotio::KinectMount& mount = guess_.kinects[sensor];
   Keyframe next{frame.received_ns, PrepareCloud(SubsampledPoints(frame, mount, 2), config_.icp)};
-  if (last) {
-    const std::int64_t latency_ns = robotio::SecondsToNanos(mount.latency_s);
-    const Eigen::Isometry3d B = DeadReckonedAt(last->received_ns - latency_ns)
-                                    .Between(DeadReckonedAt(frame.received_ns - latency_ns))
-                                    .ToIsometry();
-    const Eigen::Isometry3d& X = mount.T_base_kinect;
-    const SensorMotionResult motion =
-        EstimateSensorMotion(last->cloud, next.cloud, X.inverse() * B * X, config_.icp);
-    StepTally& t = Tally(step_);
-    if (motion.accepted) {
-      MotionPair pair;
-      pair.step = static_cast<CaptureStep>(step_);
-      pair.from_received_ns = last->received_ns;
-      pair.to_received_ns = frame.received_ns;
-      pair.T_from_to = motion.T_from_to;
-      pair.rms_m = motion.rms_m;
-      pair.structure = motion.structure;
-      capture_.kinects[frame.sensor_id].motions.push_back(pair);
-      ++t.pairs[frame.sensor_id];
-    } else {
-      ++t.rejected[frame.sensor_id];
-    }
+  std::vector<Keyframe>& history = keyframes_[sensor];
+  if (!history.empty()) AddPair(sensor, history.back(), next);
+  const auto long_back = static_cast<std::size_t>(std::max(2, config_.long_baseline_keyframes));
+  if (history.size() >= long_back) AddPair(sensor, history[history.size() - long_back], next);
+  history.push_back(std::move(next));
+  if (history.size() > long_back) history.erase(history.begin());
+}
+
+void CalibrationSession::AddPair(int sensor, const Keyframe& from, const Keyframe& to) {
+  const robotio::KinectMount& mount = guess_.kinects[sensor];
+  const std::int64_t latency_ns = robotio::SecondsToNanos(mount.latency_s);
+  const Eigen::Isometry3d B = DeadReckonedAt(from.received_ns - latency_ns)
+                                  .Between(DeadReckonedAt(to.received_ns - latency_ns))
+                                  .ToIsometry();
+  const Eigen::Isometry3d& X = mount.T_base_kinect;
+  const SensorMotionResult motion =
+      EstimateSensorMotion(from.cloud, to.cloud, X.inverse() * B * X, config_.icp);
+  StepTally& t = Tally(step_);
+  if (!motion.accepted) {
+    ++t.rejected[sensor];
+    return;
   }
-  last = std::move(next);
+  MotionPair pair;
+  // Tagged by the motion itself, so a recording without step marks plots the same way.
+  const double dtheta = std::abs(robotio::Pose2D::FromIsometry(B).theta);
+  const double ds = B.translation().norm();
+  pair.step = ds < 0.1 * dtheta                              ? CaptureStep::kTurn
+              : dtheta < config_.straight_max_curvature * ds ? CaptureStep::kStraight
+                                                             : CaptureStep::kArcs;
+  pair.from_received_ns = from.received_ns;
+  pair.to_received_ns = to.received_ns;
+  pair.T_from_to = motion.T_from_to;
+  pair.rms_m = motion.rms_m;
+  pair.structure = motion.structure;
+  capture_.kinects[sensor].motions.push_back(pair);
+  ++t.pairs[sensor];
 }
 
 SessionProgress CalibrationSession::Progress() const {
@@ -312,7 +326,7 @@ const SolverResult& CalibrationSession::Solve() {
 void CalibrationSession::Redo(SessionStep capture_step) {
   if (!IsCapture(capture_step) || step_ == SessionStep::kDone) return;
   step_ = capture_step;
-  for (auto& k : keyframes_) k.reset();  // No pair spans the pause.
+  for (auto& k : keyframes_) k.clear();  // No pair spans the pause.
 }
 
 robotio::Status CalibrationSession::Save(const std::string& file, bool allow_uncalibrated) {

@@ -229,24 +229,33 @@ void Judge(ParameterEstimate* p, bool fixed, const std::string& rule_reason, boo
   }
 }
 
-void CrossCheck(const CaptureData& capture, const std::vector<KinectState>& states,
+// Both Kinects must imply the same base motion. Their keyframes are up to a frame period
+// apart, so the other Kinect's interval is bridged to this one's with the (short, hence
+// accurate) odometry in between.
+void CrossCheck(const CaptureData& capture, const BaseTrack& track,
+                const std::vector<KinectState>& states, const double* scales,
                 SolverResult* result) {
-  if (states.size() < 2) return;
-  constexpr double kMaxOffsetS = 0.02;  // Pairs of the two Kinects this close count as one.
+  if (states.size() < 2 || track.empty()) return;
+  constexpr double kMaxOffsetS = 0.1;
+  auto odometry = [&](double t0, double t1) {
+    return BaseMotion(track, t0, t1, scales[0], scales[1]);
+  };
   double rot_sq = 0.0, trans_sq = 0.0;
   int n = 0;
   const Eigen::Isometry3d X0 = PoseOf(states[0]);
   for (std::size_t k = 1; k < states.size(); ++k) {
     const Eigen::Isometry3d Xk = PoseOf(states[k]);
     for (const MotionPair& a : capture.kinects[0].motions) {
+      const double a0 = track.Seconds(a.from_received_ns) - states[0].latency;
+      const double a1 = track.Seconds(a.to_received_ns) - states[0].latency;
       for (const MotionPair& b : capture.kinects[k].motions) {
-        const double d0 = (a.from_received_ns - b.from_received_ns) * 1e-9 -
-                          (states[0].latency - states[k].latency);
-        const double d1 = (a.to_received_ns - b.to_received_ns) * 1e-9 -
-                          (states[0].latency - states[k].latency);
-        if (std::abs(d0) > kMaxOffsetS || std::abs(d1) > kMaxOffsetS) continue;
-        const Eigen::Isometry3d diff = (X0 * a.T_from_to * X0.inverse()).inverse() *
-                                       (Xk * b.T_from_to * Xk.inverse());
+        const double b0 = track.Seconds(b.from_received_ns) - states[k].latency;
+        const double b1 = track.Seconds(b.to_received_ns) - states[k].latency;
+        if (std::abs(a0 - b0) > kMaxOffsetS || std::abs(a1 - b1) > kMaxOffsetS) continue;
+        const Eigen::Isometry3d from_a = X0 * a.T_from_to * X0.inverse();
+        const Eigen::Isometry3d from_b =
+            odometry(a0, b0) * (Xk * b.T_from_to * Xk.inverse()) * odometry(b1, a1);
+        const Eigen::Isometry3d diff = from_a.inverse() * from_b;
         rot_sq += std::pow(Eigen::AngleAxisd(diff.linear()).angle() / kDeg, 2);
         trans_sq += diff.translation().squaredNorm();
         ++n;
@@ -437,7 +446,7 @@ SolverResult SolveRig(const CaptureData& capture, const SolverConfig& config) {
   if (!track.empty()) {
     result.final_residuals = PairResiduals(capture, track, interpolator, states, scales);
   }
-  CrossCheck(capture, states, &result);
+  CrossCheck(capture, track, states, scales, &result);
   return result;
 }
 

@@ -32,10 +32,15 @@ struct SessionConfig {
   double min_floor_inlier_share = 0.15;   // Fits whose floor covers less are not counted.
   int floor_pixel_stride = 4;             // px, depth subsampling for the floor fit.
   double turn_target_deg = 270.0;         // deg of turning in place, each way.
-  double straight_target_m = 1.5;         // m of straight driving, each way (fwd and back).
-  double arc_target_m = 1.5;              // m of arc driving, each way (left and right).
+  double straight_target_m = 2.0;         // m of straight driving, each way (fwd and back).
+  double arc_target_m = 2.0;              // m of arc driving, each way (left and right).
   int min_pairs_per_step = 8;             // Accepted ICP pairs per Kinect per motion step.
-  double keyframe_interval_s = 0.5;       // s between the two frames of an ICP pair.
+  // s between keyframes; every Kinect keyframes on the same time grid so their pairs
+  // cover nearly the same intervals (the cross-check compares them).
+  double keyframe_interval_s = 0.5;
+  // Each keyframe is also paired with the one this many keyframes back: a longer baseline
+  // pins yaw better (its error falls with the distance driven within a pair).
+  int long_baseline_keyframes = 3;
   double still_speed_mps = 0.003;         // m/s, below it the base counts as standing still.
   double still_yaw_rate_radps = 0.02;     // rad/s (after bias), likewise for turning.
   double straight_max_curvature = 0.05;   // 1/m, motion straighter than this is "straight".
@@ -100,6 +105,8 @@ class CalibrationSession {
   [[nodiscard]] robotio::Pose2D DeadReckonedAt(std::int64_t stamp_ns) const;
   void AddFloorFrame(const robotio::DepthFrame& frame);
   void AddMotionFrame(const robotio::DepthFrame& frame);
+  // ICP between two keyframes of one Kinect; records an accepted pair.
+  void AddPair(int sensor, const Keyframe& from, const Keyframe& to);
   [[nodiscard]] StepTally& Tally(SessionStep step);
   [[nodiscard]] const StepTally& Tally(SessionStep step) const;
 
@@ -107,7 +114,9 @@ class CalibrationSession {
   SessionConfig config_;
   SessionStep step_ = SessionStep::kFloor;
   CaptureData capture_;
-  std::vector<std::optional<Keyframe>> keyframes_;  // Per Kinect, last motion keyframe.
+  // Per Kinect, the last long_baseline_keyframes + 1 motion keyframes, oldest first.
+  std::vector<std::vector<Keyframe>> keyframes_;
+  std::vector<std::int64_t> next_keyframe_ns_;  // Per Kinect, next grid slot.
   StepTally tallies_[4];                            // Per capture step.
   std::vector<std::pair<std::int64_t, robotio::Pose2D>> dead_reckoning_;
   double heading_ = 0.0;            // rad, integrated gyro (bias removed).

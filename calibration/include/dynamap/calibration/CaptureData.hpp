@@ -18,7 +18,7 @@ enum class CaptureStep { kFloor = 0, kTurn = 1, kStraight = 2, kArcs = 3 };
 
 // One Kinect's own motion between two of its frames, from ICP.
 struct MotionPair {
-  CaptureStep step = CaptureStep::kTurn;  // Step during which the pair was captured.
+  CaptureStep step = CaptureStep::kTurn;  // Kind of base motion (turn, straight, arc).
   std::int64_t from_received_ns = 0;      // Receive stamp of the earlier frame.
   std::int64_t to_received_ns = 0;        // Receive stamp of the later frame.
   // The sensor's pose at `to` in its own optical frame at `from` (maps `to` points into
