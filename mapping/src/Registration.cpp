@@ -158,6 +158,8 @@ RegistrationResult Registration::Align(const robotio::PointList& source,
   // Fit quality over the final alignment: one nearest-neighbour query per source point.
   const double max_sq = config_.max_correspondence_distance_m * config_.max_correspondence_distance_m;
   std::size_t inliers = 0;
+  const Eigen::Vector3d origin = result.T_target_source.translation();
+  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
   double sum_sq = 0.0;
   pcl::Indices index(1);
   std::vector<float> sq_distance(1);
@@ -166,7 +168,15 @@ RegistrationResult Registration::Align(const robotio::PointList& source,
     if (sq_distance[0] > max_sq) continue;
     ++inliers;
     sum_sq += sq_distance[0];
+    const Point& q = (*impl_->target)[static_cast<std::size_t>(index[0])];
+    if (std::isfinite(q.normal_x)) {
+      const double px = p.x - origin.x();
+      const double py = p.y - origin.y();
+      const Eigen::Vector3d J(q.normal_x, q.normal_y, px * q.normal_y - py * q.normal_x);
+      information += J * J.transpose();
+    }
   }
+  if (inliers > 0) result.planar_information = information / static_cast<double>(inliers);
   result.inlier_ratio = static_cast<double>(inliers) / static_cast<double>(aligned.size());
   if (inliers > 0) result.fitness_rmse_m = std::sqrt(sum_sq / static_cast<double>(inliers));
   return result;

@@ -42,6 +42,11 @@ struct RegistrationResult {
   double fitness_rmse_m = std::numeric_limits<double>::infinity();
   double inlier_ratio = 0.0;  // Share of source points within the distance limit, [0, 1].
   int iterations = 0;
+  // Planar point-to-plane information at the final pose, mean of J Jᵀ over the inlier
+  // pairs with J = [nx, ny, (p − o) × n |z] (o: the source origin in the target frame),
+  // order (x, y, yaw); zero when the target has no normals. A small eigenvalue marks a
+  // direction the scene does not constrain, e.g. along a bare corridor.
+  Eigen::Matrix3d planar_information = Eigen::Matrix3d::Zero();
 };
 
 // Holds the reference cloud with its search tree (and normals), so that several scans

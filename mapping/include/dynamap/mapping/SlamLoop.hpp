@@ -1,0 +1,104 @@
+// The SLAM loop (thesis 5.3, Algorithm 4): odometry + gyro prediction, preprocessing of
+// both Kinects' scans, registration against the previous scan, the map or both, a
+// plausibility gate on the correction, then the dual-map update from the corrected pose.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dynamap/mapping/DualMap.hpp"
+#include "dynamap/mapping/MappingConfig.hpp"
+#include "dynamap/mapping/Registration.hpp"
+#include "dynamap/robotio/ConfigReader.hpp"
+#include "dynamap/robotio/DepthFrame.hpp"
+#include "dynamap/robotio/Pose2D.hpp"
+#include "dynamap/robotio/Rig.hpp"
+
+namespace dynamap::mapping {
+
+// Where the registration target comes from (thesis 5.3, SelectReferenceScan).
+enum class ReferenceStrategy {
+  kPrevious,  // The previous preprocessed scan, placed with its corrected pose.
+  kMap,       // Occupied static voxel centres near the robot.
+  kCombined,  // The map first; the previous scan when the map registration is rejected.
+};
+[[nodiscard]] const char* ReferenceStrategyName(ReferenceStrategy strategy);
+
+struct SlamConfig {
+  ReferenceStrategy reference = ReferenceStrategy::kCombined;
+  RegistrationConfig registration;  // ICP settings (planar point-to-plane by default).
+  // Drop scan points in dynamic-occupied voxels before registering (thesis 5.3).
+  bool filter_dynamic = true;
+  double min_inlier_ratio = 0.6;     // Share of scan points with a partner, to accept.
+  double max_fitness_rmse_m = 0.06;  // m, RMS point distance after ICP, to accept.
+  // Plausibility: the correction to the odometry prediction may not exceed
+  // abs + per-metre · distance driven (and likewise for heading) since the last scan.
+  double max_correction_m = 0.05;           // m.
+  double max_correction_per_m = 0.2;        // m per m driven.
+  double max_correction_rad = 0.03;         // rad.
+  double max_correction_per_rad = 0.2;      // rad per rad turned (gyro).
+  // Directions of the (x, y, yaw) correction whose information eigenvalue is below this
+  // share of the largest keep the odometry prediction (a corridor does not fix motion
+  // along it). 0 applies the whole correction.
+  double degenerate_eigen_ratio = 0.05;
+  double map_reference_radius_m = 5.0;      // m, map voxels this close (x/y) form the target.
+  std::size_t min_scan_points = 200;        // Fewer preprocessed points: no registration.
+  std::size_t min_reference_points = 500;   // Fewer map voxels: the map is not yet usable.
+};
+
+// Reads a "slam:" mapping (reference, filter_dynamic, acceptance gates and a nested
+// "registration:"); unknown keys are errors naming the file.
+[[nodiscard]] SlamConfig ParseSlamConfig(robotio::ConfigNode& node);
+
+// What one scan did, for reports and run statistics.
+struct SlamStep {
+  robotio::Pose2D predicted;  // T_map_base from odometry alone, before registration.
+  robotio::Pose2D pose;       // T_map_base after the (accepted) correction.
+  bool registered = false;    // A registration was attempted.
+  bool accepted = false;      // Its correction was applied.
+  std::string reference;      // "previous" or "map" for the one accepted (else last tried).
+  RegistrationResult registration;
+  std::size_t scan_points = 0;  // After preprocessing.
+  double preprocess_s = 0.0;    // Wall time of each stage.
+  double register_s = 0.0;
+  double update_s = 0.0;
+};
+
+class SlamLoop {
+ public:
+  SlamLoop(SlamConfig config, const MappingConfig& mapping, robotio::Rig rig);
+
+  // One scan: frames of the rig taken at about the same time, each with the dead-reckoned
+  // odometry pose at its own capture time (odometry frame, any origin). The first frame's
+  // capture time is the scan's time; the others are moved to it by their odometry delta,
+  // so sensor latency and robot motion between the Kinects do not smear the scan.
+  SlamStep ProcessScan(const std::vector<robotio::DepthFrame>& frames,
+                       const std::vector<robotio::Pose2D>& odometry_at_frames);
+
+  [[nodiscard]] const robotio::Pose2D& pose() const { return pose_; }
+  [[nodiscard]] const DualMap& map() const { return map_; }
+  [[nodiscard]] const SlamConfig& config() const { return config_; }
+
+ private:
+  [[nodiscard]] robotio::PointList MapReference(const robotio::Pose2D& around) const;
+  [[nodiscard]] bool Acceptable(const RegistrationResult& result, const robotio::Pose2D& predicted,
+                                const robotio::Pose2D& increment) const;
+
+  SlamConfig config_;
+  robotio::Rig rig_;
+  DualMap map_;
+  Registration registration_;
+  robotio::Pose2D pose_;                            // T_map_base at the last scan.
+  std::optional<robotio::Pose2D> last_odometry_;    // Odometry pose at the last scan.
+  robotio::PointList previous_scan_map_;            // Last scan's points in the map frame.
+};
+
+// Frames (sorted by capture stamp) grouped into scans of one instant: a group ends when a
+// sensor repeats or the span from its first frame would exceed `max_span_ns`.
+[[nodiscard]] std::vector<std::vector<std::size_t>> GroupIntoScans(
+    const std::vector<std::int64_t>& capture_stamps_ns, const std::vector<int>& sensor_ids,
+    std::int64_t max_span_ns);
+
+}  // namespace dynamap::mapping

@@ -1,0 +1,226 @@
+#include "dynamap/mapping/SlamLoop.hpp"
+
+#include <octomap/octomap_types.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <chrono>
+#include <cmath>
+#include <utility>
+
+#include "dynamap/mapping/Preprocessing.hpp"
+
+namespace dynamap::mapping {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+robotio::PointList Transformed(const robotio::PointList& points, const robotio::Pose2D& pose) {
+  const Eigen::Isometry3f T = pose.ToIsometry().cast<float>();
+  robotio::PointList out;
+  out.reserve(points.size());
+  for (const auto& p : points) out.push_back(T * p);
+  return out;
+}
+
+// The registered pose with its correction removed along directions the scan does not
+// constrain (Zhang, Kaess & Singh 2016, solution remapping, here in x/y/yaw).
+robotio::Pose2D ConstrainedCorrection(const robotio::Pose2D& predicted,
+                                      const robotio::Pose2D& registered,
+                                      const Eigen::Matrix3d& information, double ratio) {
+  if (ratio <= 0.0 || information.isZero()) return registered;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(information);
+  const Eigen::Vector3d values = eigen.eigenvalues();
+  if (values.maxCoeff() <= 0.0) return registered;
+  const Eigen::Vector3d delta(registered.x - predicted.x, registered.y - predicted.y,
+                              robotio::WrapAngle(registered.theta - predicted.theta));
+  Eigen::Vector3d kept = Eigen::Vector3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    if (values(i) < ratio * values.maxCoeff()) continue;
+    const Eigen::Vector3d v = eigen.eigenvectors().col(i);
+    kept += v * v.dot(delta);
+  }
+  return {predicted.x + kept.x(), predicted.y + kept.y(),
+          robotio::WrapAngle(predicted.theta + kept.z())};
+}
+
+}  // namespace
+
+const char* ReferenceStrategyName(ReferenceStrategy strategy) {
+  switch (strategy) {
+    case ReferenceStrategy::kPrevious:
+      return "previous";
+    case ReferenceStrategy::kMap:
+      return "map";
+    case ReferenceStrategy::kCombined:
+      return "combined";
+  }
+  return "combined";
+}
+
+SlamConfig ParseSlamConfig(robotio::ConfigNode& node) {
+  SlamConfig config;
+  std::string reference = ReferenceStrategyName(config.reference);
+  node.ReadChoice("reference", &reference, {"previous", "map", "combined"});
+  config.reference = reference == "previous" ? ReferenceStrategy::kPrevious
+                     : reference == "map"    ? ReferenceStrategy::kMap
+                                             : ReferenceStrategy::kCombined;
+  node.Read("filter_dynamic", &config.filter_dynamic);
+  node.Read("min_inlier_ratio", &config.min_inlier_ratio, 0.0, 1.0);
+  node.Read("max_fitness_rmse_m", &config.max_fitness_rmse_m, 1e-4, 1.0);
+  node.Read("max_correction_m", &config.max_correction_m, 0.0, 5.0);
+  node.Read("max_correction_per_m", &config.max_correction_per_m, 0.0, 5.0);
+  node.Read("max_correction_rad", &config.max_correction_rad, 0.0, 3.2);
+  node.Read("max_correction_per_rad", &config.max_correction_per_rad, 0.0, 5.0);
+  node.Read("map_reference_radius_m", &config.map_reference_radius_m, 0.5, 50.0);
+  int min_scan = static_cast<int>(config.min_scan_points);
+  int min_reference = static_cast<int>(config.min_reference_points);
+  node.Read("min_scan_points", &min_scan, 10, 1'000'000);
+  node.Read("min_reference_points", &min_reference, 10, 10'000'000);
+  config.min_scan_points = static_cast<std::size_t>(min_scan);
+  config.min_reference_points = static_cast<std::size_t>(min_reference);
+  if (auto registration = node.OptionalChild("registration")) {
+    config.registration = ParseRegistrationConfig(*registration);
+  }
+  return config;
+}
+
+SlamLoop::SlamLoop(SlamConfig config, const MappingConfig& mapping, robotio::Rig rig)
+    : config_(std::move(config)),
+      rig_(std::move(rig)),
+      map_(mapping),
+      registration_(config_.registration) {
+  for (auto& mount : rig_.kinects) {
+    mount.max_range_m = std::min(mount.max_range_m, mapping.max_range_m);
+  }
+}
+
+robotio::PointList SlamLoop::MapReference(const robotio::Pose2D& around) const {
+  const DualOcTree& tree = map_.tree();
+  robotio::PointList points;
+  if (tree.getRoot() == nullptr) return points;
+  const auto r = static_cast<float>(config_.map_reference_radius_m);
+  const octomap::point3d min(static_cast<float>(around.x) - r, static_cast<float>(around.y) - r,
+                             -100.0f);
+  const octomap::point3d max(static_cast<float>(around.x) + r, static_cast<float>(around.y) + r,
+                             100.0f);
+  for (auto it = tree.begin_leafs_bbx(min, max), end = tree.end_leafs_bbx(); it != end; ++it) {
+    if (!tree.IsStaticOccupied(*it)) continue;
+    const octomap::point3d c = it.getCoordinate();
+    points.emplace_back(c.x(), c.y(), c.z());
+  }
+  return points;
+}
+
+bool SlamLoop::Acceptable(const RegistrationResult& result, const robotio::Pose2D& predicted,
+                          const robotio::Pose2D& increment) const {
+  if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
+      result.fitness_rmse_m > config_.max_fitness_rmse_m) {
+    return false;
+  }
+  // The gyro and wheels are good over one frame interval: a correction much larger than
+  // what they could have got wrong is a registration into the wrong minimum.
+  const robotio::Pose2D correction =
+      predicted.Between(robotio::Pose2D::FromIsometry(result.T_target_source));
+  const double driven = std::hypot(increment.x, increment.y);
+  const double turned = std::abs(increment.theta);
+  return std::hypot(correction.x, correction.y) <=
+             config_.max_correction_m + config_.max_correction_per_m * driven &&
+         std::abs(correction.theta) <=
+             config_.max_correction_rad + config_.max_correction_per_rad * turned;
+}
+
+SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
+                               const std::vector<robotio::Pose2D>& odometry_at_frames) {
+  SlamStep step;
+  if (frames.empty() || frames.size() != odometry_at_frames.size()) {
+    step.predicted = step.pose = pose_;
+    return step;
+  }
+  // Algorithm 4, lines 2-4: add the odometry increment since the last scan.
+  const robotio::Pose2D& odometry = odometry_at_frames.front();
+  // The map frame is the odometry frame: the first scan is placed where odometry says.
+  const robotio::Pose2D increment =
+      last_odometry_ ? last_odometry_->Between(odometry) : robotio::Pose2D{};
+  step.predicted = last_odometry_ ? pose_.Compose(increment) : odometry;
+  last_odometry_ = odometry;
+
+  // Line 5: both Kinects in base at the scan's time, voxel filter, dynamic points out.
+  auto t = Clock::now();
+  std::vector<robotio::Pose2D> frame_offsets;  // base at the scan time ← base at frame k.
+  robotio::PointList merged;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    frame_offsets.push_back(odometry.Between(odometry_at_frames[k]));
+    const auto sensor = static_cast<std::size_t>(frames[k].sensor_id);
+    if (sensor >= rig_.kinects.size()) continue;
+    const robotio::PointList points =
+        Transformed(robotio::DepthToBasePoints(frames[k], rig_.kinects[sensor]), frame_offsets[k]);
+    merged.insert(merged.end(), points.begin(), points.end());
+  }
+  robotio::PointList scan = VoxelGridFilter(merged, map_.config().voxel_filter_m);
+  if (config_.filter_dynamic) scan = RemoveDynamicPoints(scan, map_, step.predicted.ToIsometry());
+  step.scan_points = scan.size();
+  step.preprocess_s = SecondsSince(t);
+
+  // Lines 6-10: register against the selected reference, keep a plausible correction.
+  t = Clock::now();
+  step.pose = step.predicted;
+  auto try_reference = [&](const robotio::PointList& reference, const char* name) {
+    if (reference.size() < config_.min_reference_points) return false;
+    registration_.SetTarget(reference);
+    step.registration = registration_.Align(scan, step.predicted.ToIsometry());
+    step.registered = true;
+    step.reference = name;
+    if (!Acceptable(step.registration, step.predicted, increment)) return false;
+    step.pose = ConstrainedCorrection(step.predicted,
+                                      robotio::Pose2D::FromIsometry(step.registration.T_target_source),
+                                      step.registration.planar_information,
+                                      config_.degenerate_eigen_ratio);
+    step.accepted = true;
+    return true;
+  };
+  if (scan.size() >= config_.min_scan_points) {
+    const bool use_map = config_.reference != ReferenceStrategy::kPrevious;
+    const bool use_previous = config_.reference != ReferenceStrategy::kMap;
+    const bool done = use_map && try_reference(MapReference(step.predicted), "map");
+    if (!done && use_previous) try_reference(previous_scan_map_, "previous");
+  }
+  step.register_s = SecondsSince(t);
+  pose_ = step.pose;
+
+  // Line 11: both maps from the corrected pose, every frame at its own capture time.
+  t = Clock::now();
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const auto sensor = static_cast<std::size_t>(frames[k].sensor_id);
+    if (sensor >= rig_.kinects.size()) continue;
+    map_.InsertDepthFrame(frames[k], rig_.kinects[sensor],
+                          pose_.Compose(frame_offsets[k]).ToIsometry());
+  }
+  previous_scan_map_ = Transformed(scan, pose_);
+  step.update_s = SecondsSince(t);
+  return step;
+}
+
+std::vector<std::vector<std::size_t>> GroupIntoScans(const std::vector<std::int64_t>& capture_stamps_ns,
+                                                     const std::vector<int>& sensor_ids,
+                                                     std::int64_t max_span_ns) {
+  std::vector<std::vector<std::size_t>> scans;
+  std::int64_t group_start = 0;
+  for (std::size_t i = 0; i < capture_stamps_ns.size(); ++i) {
+    bool fits = !scans.empty() && capture_stamps_ns[i] - group_start <= max_span_ns;
+    if (fits) {
+      for (std::size_t j : scans.back()) fits = fits && sensor_ids[j] != sensor_ids[i];
+    }
+    if (!fits) {
+      scans.emplace_back();
+      group_start = capture_stamps_ns[i];
+    }
+    scans.back().push_back(i);
+  }
+  return scans;
+}
+
+}  // namespace dynamap::mapping
