@@ -110,6 +110,13 @@ RenderedImage DepthRenderer::Render(const Eigen::Isometry3d& T_world_kinect,
   std::vector<std::uint16_t> label(n, 0);
   const Eigen::Matrix3f R = T_world_kinect.linear().cast<float>();
   const Eigen::Vector3f origin = T_world_kinect.translation().cast<float>();
+  // Ray direction = R * (xn, yn, 1): per-column and per-row terms computed once.
+  std::vector<Eigen::Vector3f> column_term(static_cast<std::size_t>(w) + kTile);
+  std::vector<Eigen::Vector3f> row_term(static_cast<std::size_t>(h) + kTile);
+  for (int u = 0; u < w + kTile; ++u) {
+    column_term[u] = R.col(0) * static_cast<float>((u - k.cx) / k.fx) + R.col(2);
+  }
+  for (int v = 0; v < h + kTile; ++v) row_term[v] = R.col(1) * static_cast<float>((v - k.cy) / k.fy);
   const int tiles_x = (w + kTile - 1) / kTile;
   const int tiles_y = (h + kTile - 1) / kTile;
   const float far = static_cast<float>(model.far_limit_m) * 1.01f;
@@ -125,8 +132,7 @@ RenderedImage DepthRenderer::Render(const Eigen::Isometry3d& T_world_kinect,
         const int v = ty * kTile + i / kTile;
         valid[i] = (u < w && v < h) ? -1 : 0;
         // Direction with optical z = 1, so the hit distance t is the depth z itself.
-        const Eigen::Vector3f d = R * Eigen::Vector3f(static_cast<float>((u - k.cx) / k.fx),
-                                                      static_cast<float>((v - k.cy) / k.fy), 1.0f);
+        const Eigen::Vector3f d = column_term[u] + row_term[v];
         packet.ray.org_x[i] = origin.x();
         packet.ray.org_y[i] = origin.y();
         packet.ray.org_z[i] = origin.z();

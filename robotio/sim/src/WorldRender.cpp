@@ -3,7 +3,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "dynamap/robotio/sim/WorldTimeline.hpp"
 
@@ -15,7 +17,7 @@ const cv::Scalar kOutside(200, 200, 200);
 const cv::Scalar kFloor(250, 250, 248);
 const cv::Scalar kGrid(232, 232, 228);
 const cv::Scalar kWall(40, 40, 40);
-const cv::Scalar kDoor(200, 120, 30);
+const cv::Scalar kDoor(30, 120, 230);  // BGR: orange.
 const cv::Scalar kFurniture(60, 110, 170);
 const cv::Scalar kFurnitureFill(170, 205, 230);
 const cv::Scalar kHole(70, 30, 30);
@@ -29,8 +31,10 @@ class Canvas {
  public:
   Canvas(const World& world, const WorldRenderConfig& config) : world_(world), config_(config) {
     const Eigen::Vector2d extent = world.floor_max - world.floor_min;
-    image_ = cv::Mat(static_cast<int>(extent.y() * config.pixels_per_metre) + 2 * config.margin_px + 30,
-                     static_cast<int>(extent.x() * config.pixels_per_metre) + 2 * config.margin_px,
+    // Room below the floor for the scale bar and two legend lines; wide enough for them.
+    image_ = cv::Mat(static_cast<int>(extent.y() * config.pixels_per_metre) + 2 * config.margin_px + 40,
+                     std::max(820, static_cast<int>(extent.x() * config.pixels_per_metre) +
+                                       2 * config.margin_px),
                      CV_8UC3, kOutside);
   }
 
@@ -149,7 +153,7 @@ void DrawObjects(const World& world, Canvas& canvas) {
   for (const Door& d : world.doors) {
     for (const bool open : {false, true}) {
       for (const Solid& s : DoorSolids(d, open)) {
-        canvas.FillSolid(s, open == DoorOpenAt(d, 0.0) ? kDoor : cv::Scalar(230, 200, 170), kDoor);
+        canvas.FillSolid(s, open == DoorOpenAt(d, 0.0) ? kDoor : cv::Scalar(170, 210, 250), kDoor);
       }
     }
     if (!d.sliding) {
@@ -206,9 +210,9 @@ void DrawRobot(const World& world, Canvas& canvas) {
 }
 
 void DrawLegend(const World& world, Canvas& canvas) {
-  const int bottom = canvas.image().rows - 12;
+  const int bottom = canvas.image().rows - 30;
   const int left = 40;
-  // Scale bar: 1 m ticks up to 5 m.
+  // Scale bar: alternating 1 m blocks up to 5 m.
   const int five = canvas.Len(5.0);
   cv::rectangle(canvas.image(), {left, bottom - 6}, {left + five, bottom}, kText, 1);
   for (int m = 0; m < 5; m += 2) {
@@ -216,13 +220,14 @@ void DrawLegend(const World& world, Canvas& canvas) {
                   kText, cv::FILLED);
   }
   canvas.Text("5 m", {left + five + 6, bottom}, 0.45, kText);
-  const std::string title = (world.name.empty() ? world.file : world.name) + "   " +
-                            std::to_string(static_cast<int>(world.floor_max.x() - world.floor_min.x())) +
-                            " x " +
-                            std::to_string(static_cast<int>(world.floor_max.y() - world.floor_min.y())) +
-                            " m   robot start: green, people paths: colours, doors: orange (open "
-                            "at t=0 dark), holes: hatched";
-  canvas.Text(title, {left + five + 60, bottom}, 0.45, kText);
+  char size[64];
+  std::snprintf(size, sizeof(size), "   %.0f x %.0f m, 1 m grid", world.floor_max.x() - world.floor_min.x(),
+                world.floor_max.y() - world.floor_min.y());
+  canvas.Text((world.name.empty() ? world.file : world.name) + size, {left + five + 50, bottom}, 0.45,
+              kText);
+  canvas.Text("green: robot start and scripted path   colours: people paths (dot = pause)   "
+              "orange: doors (dark = state at t=0)   hatched: holes   light: earlier placements",
+              {left, bottom + 20}, 0.38, kText);
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ struct KinectModelConfig {
   double disparity_step = 2.85e-3;       // 1/m, inverse-depth step: z steps of step * z^2.
   double far_limit_m = 8.0;              // m, farthest reported depth; the Kinect reports
                                          // beyond the rig's reliable max_range_m.
-  double grazing_start_deg = 75.0;       // deg incidence where dropouts begin ...
+  double grazing_start_deg = 75.0;       // deg incidence where dropouts begin (60..89) ...
   double grazing_full_deg = 87.0;        // ... deg incidence where every pixel drops out.
   double edge_jump_ratio = 0.04;         // Relative depth jump to a 4-neighbour that marks
                                          // a discontinuity.
