@@ -38,6 +38,13 @@ TraversalGrid BuildTraversalGrid(const GridMap& map, const CostFieldConfig& conf
   return grid;
 }
 
+double Clearance(const TraversalGrid& grid, GridIndex cell, const CostFieldConfig& config) {
+  if (grid.Blocked(cell)) return 0.0;
+  const double p = grid.penalty[grid.Index(cell)];
+  if (p <= 0.0 || config.proximity_weight <= 0.0) return config.proximity_range_m;
+  return config.proximity_range_m * (1.0 - p / config.proximity_weight);
+}
+
 TraversalGrid TraversalFromPassable(int width, int height, const std::vector<bool>& passable) {
   assert(passable.size() == static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   TraversalGrid grid(width, height, 0.0);

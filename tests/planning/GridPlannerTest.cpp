@@ -149,6 +149,18 @@ TEST(CostField, InflatesObstaclesByTheRobotRadius) {
   EXPECT_GT(grid.penalty[grid.Index({14, 10})], grid.penalty[grid.Index({15, 10})]);
 }
 
+TEST(CostField, ClearanceFollowsTheDistanceToTheInflatedBoundary) {
+  GridMap map(31, 1, 0.1, CellState::kNavigable);
+  map.Set({0, 0}, CellState::kObstacle);
+  CostFieldConfig config;
+  config.robot_radius_m = 0.3;
+  config.proximity_range_m = 1.0;
+  const TraversalGrid grid = BuildTraversalGrid(map, config);
+  EXPECT_DOUBLE_EQ(Clearance(grid, {2, 0}, config), 0.0);   // Inside the radius: blocked.
+  EXPECT_NEAR(Clearance(grid, {8, 0}, config), 0.5, 1e-6);  // 0.8 m from the obstacle.
+  EXPECT_NEAR(Clearance(grid, {25, 0}, config), 1.0, 1e-6);  // Beyond the range: at least.
+}
+
 TEST(CostField, UnknownBlocksUnlessConfiguredOptimistic) {
   GridMap map(5, 1, 0.1, CellState::kNavigable);
   map.Set({4, 0}, CellState::kUnknown);

@@ -21,6 +21,12 @@ struct CostFieldConfig {
 
 [[nodiscard]] TraversalGrid BuildTraversalGrid(const GridMap& map, const CostFieldConfig& config);
 
+// Free distance from the robot's footprint edge to the nearest obstacle at `cell`, m, as
+// the cost field knows it: 0 when blocked, exact within the proximity range, and
+// `proximity_range_m` (a lower bound) beyond it. The path follower's clearance input.
+[[nodiscard]] double Clearance(const TraversalGrid& grid, GridIndex cell,
+                               const CostFieldConfig& config);
+
 // Every passable cell penalty 0, the rest blocked (Moving AI maps, tests).
 [[nodiscard]] TraversalGrid TraversalFromPassable(int width, int height,
                                                   const std::vector<bool>& passable);
