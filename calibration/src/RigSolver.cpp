@@ -236,7 +236,7 @@ void CrossCheck(const CaptureData& capture, const BaseTrack& track,
                 const std::vector<KinectState>& states, const double* scales,
                 SolverResult* result) {
   if (states.size() < 2 || track.empty()) return;
-  constexpr double kMaxOffsetS = 0.1;
+  constexpr double kMaxOffsetS = 0.15;  // s, up to one frame period at 6.7 Hz and above.
   auto odometry = [&](double t0, double t1) {
     return BaseMotion(track, t0, t1, scales[0], scales[1]);
   };
