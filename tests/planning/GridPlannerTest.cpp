@@ -8,6 +8,7 @@
 #include "dynamap/planning/AStar.hpp"
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/DStarLite.hpp"
+#include "dynamap/planning/PathPlanner.hpp"
 #include "dynamap/planning/PathShortening.hpp"
 
 namespace dynamap::planning {
@@ -131,6 +132,36 @@ TEST(GridPlanners, DStarLiteMatchesAStarAfterRandomChangesAndMoves) {
     }
   }
   EXPECT_GT(compared_found, kSeeds * kRounds / 3);  // The property was exercised, not vacuous.
+}
+
+TEST(PathPlanner, IncrementalAndFromScratchModesAgreeAsTheMapAndRobotChange) {
+  GridMap map(60, 40, 0.1, CellState::kNavigable);
+  CostFieldConfig cost;
+  cost.robot_radius_m = 0.2;
+  TraversalGrid grid = BuildTraversalGrid(map, cost);
+  PathPlanner dstar("dstar", grid);
+  PathPlanner astar("astar", grid);
+  EXPECT_FALSE(dstar.Plan().found);  // No goal yet.
+  for (PathPlanner* p : {&dstar, &astar}) {
+    p->MoveStart({2, 20});
+    p->SetGoal({57, 20});
+  }
+  std::mt19937 rng(7);
+  for (int step = 0; step < 20; ++step) {
+    // A wall segment appears somewhere; the robot advances along its path.
+    const int x = 10 + static_cast<int>(rng() % 40);
+    const int y = static_cast<int>(rng() % 30);
+    for (int k = 0; k < 8; ++k) map.Set({x, y + k}, CellState::kObstacle);
+    grid = BuildTraversalGrid(map, cost);
+    dstar.SetGrid(grid);
+    astar.SetGrid(grid);
+    const GridPath a = astar.Plan();
+    const GridPath d = dstar.Plan();
+    ExpectSameCost(d, a, "step " + std::to_string(step));
+    if (!d.found || d.cells.size() < 3) break;
+    dstar.MoveStart(d.cells[2]);
+    astar.MoveStart(d.cells[2]);
+  }
 }
 
 TEST(CostField, InflatesObstaclesByTheRobotRadius) {
