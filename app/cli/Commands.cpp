@@ -3,6 +3,8 @@
 #include "cli/EvalTrajectoryCommand.hpp"
 #include "cli/MapCommand.hpp"
 #include "cli/PlanGridCommand.hpp"
+#include "cli/RecordCommand.hpp"
+#include "cli/WorldRenderCommand.hpp"
 
 namespace dynamap::app {
 
@@ -10,6 +12,8 @@ void RegisterCommands(CLI::App& app) {
   RegisterEvalTrajectoryCommand(app);
   RegisterMapCommand(app);
   RegisterPlanGridCommand(app);
+  RegisterRecordCommand(app);
+  RegisterWorldCommand(app);
 }
 
 }  // namespace dynamap::app
