@@ -1,5 +1,6 @@
 #include "cli/Commands.hpp"
 
+#include "cli/CalibrateCommand.hpp"
 #include "cli/EvalTrajectoryCommand.hpp"
 #include "cli/MapCommand.hpp"
 #include "cli/PlanGridCommand.hpp"
@@ -9,6 +10,7 @@
 namespace dynamap::app {
 
 void RegisterCommands(CLI::App& app) {
+  RegisterCalibrateCommand(app);
   RegisterEvalTrajectoryCommand(app);
   RegisterMapCommand(app);
   RegisterPlanGridCommand(app);
