@@ -5,16 +5,20 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "cli/CommandSupport.hpp"
 #include "cli/ProgressLine.hpp"
+#include "cli/SlamRun.hpp"
 #include "dynamap/mapping/DualMap.hpp"
 #include "dynamap/mapping/MapEvaluation.hpp"
 #include "dynamap/mapping/MapExport.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
 #include "dynamap/mapping/PointCloudFiles.hpp"
+#include "dynamap/mapping/TrajectoryEvaluation.hpp"
 #include "dynamap/robotio/Pose2D.hpp"
 #include "dynamap/robotio/RecordingReader.hpp"
 #include "dynamap/robotio/sim/RobotConfig.hpp"
@@ -30,7 +34,9 @@ namespace fs = std::filesystem;
 struct MapOptions {
   std::string log;
   std::string out;
-  std::string poses = "groundtruth";
+  std::string poses = "slam";
+  std::string reference = "combined";  // SLAM registration target (--poses slam).
+  std::string mode = "playback";       // Run mode of the SLAM pass (--poses slam).
   std::string update = "dynamic";
   double resolution_m = 0.05;
   double max_range_m = 4.0;
@@ -61,6 +67,62 @@ robotio::Trajectory SelectPoses(const robotio::RecordingReader& reader, const Ma
   return IntegrateWheelOdometry(reader.odometry(), robot->track_width_m);
 }
 
+SlamRunResult RunSlamPass(const robotio::RecordingReader& reader, const MapOptions& o,
+                          const mapping::MappingConfig& config) {
+  SlamRunOptions options;
+  options.mapping = config;
+  options.slam.reference = o.reference == "previous" ? mapping::ReferenceStrategy::kPrevious
+                           : o.reference == "map"    ? mapping::ReferenceStrategy::kMap
+                                                     : mapping::ReferenceStrategy::kCombined;
+  options.mode = o.mode == "simulate" ? RunMode::kSimulate : RunMode::kPlayback;
+  const std::string robot_file = fs::exists(o.robot) ? o.robot : ResourcePath(o.robot);
+  auto robot = robotio::sim::LoadRobotConfig(robot_file);
+  if (!robot) FailCommand(kCommand, robot.error().message);
+  options.motion.track_width_m = robot->track_width_m;
+  ProgressLine progress("slam");
+  auto result = RunSlam(reader, options, [&](double f) { progress.Update(f, "scans"); });
+  if (!result) FailCommand(kCommand, result.error().message);
+  progress.Finish(std::to_string(result->frames_processed) + " frames");
+  return std::move(*result);
+}
+
+nlohmann::json MedianAndP95(std::vector<double> seconds) {
+  if (seconds.empty()) return {{"median_s", nullptr}, {"p95_s", nullptr}};
+  std::sort(seconds.begin(), seconds.end());
+  const auto at = [&](double q) {
+    return seconds[static_cast<std::size_t>(q * static_cast<double>(seconds.size() - 1) + 0.5)];
+  };
+  return {{"median_s", at(0.5)}, {"p95_s", at(0.95)}};
+}
+
+void AddSlamReport(const robotio::RecordingReader& reader, const MapOptions& o,
+                   const SlamRunResult& slam, nlohmann::json* report) {
+  (*report)["reference"] = o.reference;
+  (*report)["mode"] = o.mode;
+  (*report)["frames_processed"] = slam.frames_processed;
+  (*report)["frames_dropped"] = slam.frames_dropped;
+  (*report)["registrations_accepted"] = slam.registrations_accepted;
+  (*report)["registrations_rejected"] = slam.registrations_rejected;
+  (*report)["slam_stage_times"] = {{"preprocess", MedianAndP95(slam.preprocess_s)},
+                                   {"register", MedianAndP95(slam.register_s)},
+                                   {"map_update", MedianAndP95(slam.update_s)},
+                                   {"total", MedianAndP95(slam.total_s)}};
+  double busy_s = 0.0;
+  for (double s : slam.total_s) busy_s += s;
+  (*report)["slam_frames_per_s"] =
+      busy_s > 0.0 ? static_cast<double>(slam.frames_processed) / busy_s : 0.0;
+  // DESIGN.md, Evaluation: no alignment; ground truth and estimate share the map origin.
+  const auto& truth = reader.ground_truth();
+  const auto estimate = mapping::EvaluateTrajectory(truth, slam.trajectory, {});
+  const auto odometry = mapping::EvaluateTrajectory(truth, slam.odometry, {});
+  (*report)["ate_rmse_m"] = estimate ? nlohmann::json(estimate->ate_m.rmse) : nlohmann::json();
+  (*report)["odometry_ate_rmse_m"] =
+      odometry ? nlohmann::json(odometry->ate_m.rmse) : nlohmann::json();
+  const bool rpe = estimate && estimate->rpe;
+  (*report)["rpe_trans_m_per_m"] = rpe ? nlohmann::json(estimate->rpe->trans_m_per_m) : nlohmann::json();
+  (*report)["rpe_rot_deg_per_m"] = rpe ? nlohmann::json(estimate->rpe->rot_deg_per_m) : nlohmann::json();
+}
+
 // The recording's world, for the true static surfaces; nullopt when it has none.
 std::optional<robotio::PointList> SurfaceSamples(const robotio::RecordingReader& reader,
                                                  double spacing_m) {
@@ -76,14 +138,18 @@ void RunMap(const MapOptions& o) {
   auto opened = robotio::RecordingReader::Open(o.log);
   if (!opened) FailCommand(kCommand, opened.error().message);
   const robotio::RecordingReader& reader = *opened;
-  const robotio::Trajectory poses = SelectPoses(reader, o);
-
   mapping::MappingConfig config;
   config.resolution_m = o.resolution_m;
   config.max_range_m = o.max_range_m;
   config.update = o.update == "regular" ? mapping::UpdateMode::kRegular
                                         : mapping::UpdateMode::kDynamic;
   Check(mapping::ValidateMappingConfig(config, "command line"));
+  // With --poses slam a SLAM pass over the recording estimates the pose of every frame
+  // (its own dual map steers the dynamic-point filter); the map below is then built from
+  // those poses like from any other pose source.
+  std::optional<SlamRunResult> slam;
+  if (o.poses == "slam") slam = RunSlamPass(reader, o, config);
+  const robotio::Trajectory poses = slam ? slam->frame_poses : SelectPoses(reader, o);
   mapping::DualMap map(config);
   const bool labelled = !reader.label_entries().empty();
   mapping::PointAccuracyCounter accuracy(config.resolution_m, config.max_range_m, o.eval_stride);
@@ -153,6 +219,10 @@ void RunMap(const MapOptions& o) {
       {"static_occupied_voxels", static_points.size()},
       {"dynamic_occupied_voxels", dynamic_points.size()},
   };
+  if (slam) {
+    Check(robotio::WriteTumTrajectory(slam->trajectory, (out / "trajectory.tum").string()));
+    AddSlamReport(reader, o, *slam, &report);
+  }
   t = Clock::now();
   if (labelled) {
     const mapping::PointAccuracy a = accuracy.Evaluate(map.tree());
@@ -215,12 +285,23 @@ Eigen::Isometry3d PoseAtStamp(const robotio::Trajectory& trajectory, std::int64_
 void RegisterMapCommand(CLI::App& app) {
   auto options = std::make_shared<MapOptions>();
   CLI::App* map = app.add_subcommand(
-      "map", "Integrate a recording into the dual static/dynamic 3D map from known poses; "
-             "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png and report.json");
+      "map", "Integrate a recording into the dual static/dynamic 3D map with SLAM (or known) poses; "
+             "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png, trajectory.tum and "
+             "report.json");
   map->add_option("--log", options->log, "Recording directory")->required();
   map->add_option("--out", options->out, "Output directory")->required();
-  map->add_option("--poses", options->poses, "Pose source")
-      ->check(CLI::IsMember({"groundtruth", "odometry"}))
+  map->add_option("--poses", options->poses,
+                  "Pose source: slam (odometry + gyro corrected by ICP), groundtruth, odometry")
+      ->check(CLI::IsMember({"slam", "groundtruth", "odometry"}))
+      ->capture_default_str();
+  map->add_option("--reference", options->reference,
+                  "SLAM registration target: previous scan, map, or combined (map first)")
+      ->check(CLI::IsMember({"previous", "map", "combined"}))
+      ->capture_default_str();
+  map->add_option("--mode", options->mode,
+                  "SLAM run mode: playback (every frame, as fast as possible) or simulate "
+                  "(recorded pace, late frames dropped and counted)")
+      ->check(CLI::IsMember({"playback", "simulate"}))
       ->capture_default_str();
   map->add_option("--update", options->update,
                   "dynamic: Tables 4.1/4.2; regular: standard occupancy update")

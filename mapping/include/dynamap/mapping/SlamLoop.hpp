@@ -35,9 +35,9 @@ struct SlamConfig {
   double max_fitness_rmse_m = 0.06;  // m, RMS point distance after ICP, to accept.
   // Plausibility: the correction to the odometry prediction may not exceed
   // abs + per-metre · distance driven (and likewise for heading) since the last scan.
-  double max_correction_m = 0.05;           // m.
+  double max_correction_m = 0.01;           // m.
   double max_correction_per_m = 0.2;        // m per m driven.
-  double max_correction_rad = 0.03;         // rad.
+  double max_correction_rad = 0.005;        // rad.
   double max_correction_per_rad = 0.2;      // rad per rad turned (gyro).
   // Directions of the (x, y, yaw) correction whose information eigenvalue is below this
   // share of the largest keep the odometry prediction (a corridor does not fix motion

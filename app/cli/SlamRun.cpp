@@ -1,0 +1,103 @@
+#include "cli/SlamRun.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+
+#include "dynamap/robotio/Time.hpp"
+
+namespace dynamap::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+}  // namespace
+
+robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
+                                         const SlamRunOptions& options,
+                                         const std::function<void(double)>& progress) {
+  SlamRunResult result;
+  const robotio::Rig& rig = reader.rig();
+  // Capture stamps of the entries (receive stamp minus the sensor's latency), in order.
+  const auto& entries = reader.depth_entries();
+  std::vector<std::size_t> order;
+  std::vector<std::int64_t> capture_ns(entries.size(), 0);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const auto sensor = static_cast<std::size_t>(entries[i].sensor_id);
+    if (sensor >= rig.kinects.size()) continue;
+    capture_ns[i] =
+        entries[i].received_ns - robotio::SecondsToNanos(rig.kinects[sensor].latency_s);
+    order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return capture_ns[a] < capture_ns[b]; });
+  std::vector<std::int64_t> stamps;
+  std::vector<int> sensors;
+  for (std::size_t i : order) {
+    stamps.push_back(capture_ns[i]);
+    sensors.push_back(entries[i].sensor_id);
+  }
+  // Frames of one instant: the rig's Kinects are unsynchronised, up to a frame apart.
+  double period_s = 1.0 / 30.0;
+  for (const auto& mount : rig.kinects) period_s = std::max(period_s, 1.0 / mount.rate_hz);
+  const auto scans = mapping::GroupIntoScans(stamps, sensors, robotio::SecondsToNanos(period_s * 0.75));
+
+  const mapping::Trajectory2D dead_reckoning =
+      mapping::DeadReckon(reader.odometry(), reader.imu(), options.motion);
+  if (dead_reckoning.empty()) return robotio::Error{reader.dir() + ": no odometry readings"};
+  mapping::SlamLoop slam(options.slam, options.mapping, rig);
+
+  // Simulate mode: a clock at the recording's pace that the SLAM work advances; a scan
+  // is taken when SLAM is free, and only the newest one that has arrived by then.
+  std::int64_t sim_clock_ns = 0;
+  auto ready_ns = [&](const std::vector<std::size_t>& scan) {
+    std::int64_t ready = 0;
+    for (std::size_t k : scan) ready = std::max(ready, entries[order[k]].received_ns);
+    return ready;
+  };
+  for (std::size_t s = 0; s < scans.size(); ++s) {
+    if (options.mode == RunMode::kSimulate) {
+      sim_clock_ns = std::max(sim_clock_ns, ready_ns(scans[s]));
+      if (s + 1 < scans.size() && ready_ns(scans[s + 1]) <= sim_clock_ns) {
+        result.frames_dropped += scans[s].size();
+        continue;
+      }
+    }
+    std::vector<robotio::DepthFrame> frames;
+    std::vector<robotio::Pose2D> odometry;
+    for (std::size_t k : scans[s]) {
+      auto frame = reader.LoadDepth(entries[order[k]]);
+      if (!frame) return frame.error();
+      odometry.push_back(mapping::PoseAt(dead_reckoning, frame->stamp_ns));
+      frames.push_back(std::move(*frame));
+    }
+    const auto start = Clock::now();
+    const mapping::SlamStep step = slam.ProcessScan(frames, odometry);
+    const double total = std::chrono::duration<double>(Clock::now() - start).count();
+    if (options.mode == RunMode::kSimulate) sim_clock_ns += robotio::SecondsToNanos(total);
+
+    result.frames_processed += frames.size();
+    if (step.accepted) {
+      ++result.registrations_accepted;
+    } else if (step.registered) {
+      ++result.registrations_rejected;
+    }
+    result.preprocess_s.push_back(step.preprocess_s);
+    result.register_s.push_back(step.register_s);
+    result.update_s.push_back(step.update_s);
+    result.total_s.push_back(total);
+    const std::int64_t stamp = frames.front().stamp_ns;
+    result.trajectory.push_back(robotio::ToStampedPose(stamp, step.pose));
+    result.odometry.push_back(robotio::ToStampedPose(stamp, odometry.front()));
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      const robotio::Pose2D at_frame = step.pose.Compose(odometry.front().Between(odometry[k]));
+      result.frame_poses.push_back(robotio::ToStampedPose(frames[k].stamp_ns, at_frame));
+    }
+    if (progress) progress(static_cast<double>(s + 1) / static_cast<double>(scans.size()));
+  }
+  std::sort(result.frame_poses.begin(), result.frame_poses.end(),
+            [](const auto& a, const auto& b) { return a.stamp_ns < b.stamp_ns; });
+  return result;
+}
+
+}  // namespace dynamap::app

@@ -1,0 +1,43 @@
+// Runs the SLAM loop over a recording in one of the thesis's run modes (2.3): playback
+// (every scan, as fast as possible) or simulate (recorded pace, late scans dropped).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "dynamap/mapping/MotionModel.hpp"
+#include "dynamap/mapping/SlamLoop.hpp"
+#include "dynamap/robotio/RecordingReader.hpp"
+#include "dynamap/robotio/TumTrajectory.hpp"
+
+namespace dynamap::app {
+
+enum class RunMode { kPlayback, kSimulate };
+
+struct SlamRunOptions {
+  mapping::SlamConfig slam;
+  mapping::MappingConfig mapping;
+  mapping::MotionModelConfig motion;
+  RunMode mode = RunMode::kPlayback;
+};
+
+struct SlamRunResult {
+  robotio::Trajectory trajectory;   // T_map_base at each processed scan's capture time.
+  robotio::Trajectory frame_poses;  // T_map_base at each processed frame's capture time.
+  robotio::Trajectory odometry;     // Odometry + gyro alone, at the same scan stamps.
+  std::size_t frames_processed = 0;
+  std::size_t frames_dropped = 0;   // Simulate mode: not taken in time.
+  std::size_t registrations_accepted = 0;
+  std::size_t registrations_rejected = 0;  // Attempted, not applied.
+  // Wall time per processed scan of each stage (s).
+  std::vector<double> preprocess_s, register_s, update_s, total_s;
+};
+
+// Errors (an unreadable frame) are reported through Expected. `progress` gets the
+// fraction of scans done.
+[[nodiscard]] robotio::Expected<SlamRunResult> RunSlam(
+    const robotio::RecordingReader& reader, const SlamRunOptions& options,
+    const std::function<void(double)>& progress);
+
+}  // namespace dynamap::app
