@@ -55,7 +55,13 @@ const DualOcTreeNode* DualMap::Find(const Eigen::Vector3f& p_map) const {
 VoxelState DualMap::StaticState(const Eigen::Vector3f& p_map) const {
   const DualOcTreeNode* node = Find(p_map);
   if (node == nullptr) return VoxelState::kUnknown;
-  return tree_->IsStaticOccupied(*node) ? VoxelState::kOccupied : VoxelState::kFree;
+  // The same three-way split the update rules use (free only with enough free evidence).
+  switch (ClassifyStatic(node->getValue(), rules_)) {
+    case StaticState::kOccupied: return VoxelState::kOccupied;
+    case StaticState::kFree: return VoxelState::kFree;
+    case StaticState::kUnknown: break;
+  }
+  return VoxelState::kUnknown;
 }
 
 VoxelState DualMap::DynamicState(const Eigen::Vector3f& p_map) const {

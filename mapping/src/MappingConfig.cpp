@@ -21,6 +21,7 @@ MappingConfig ParseMappingConfig(robotio::ConfigNode& node) {
   node.Read("clamp_min", &config.clamp_min, 0.001, 0.499);
   node.Read("clamp_max", &config.clamp_max, 0.501, 0.999);
   node.Read("occupancy_threshold", &config.occupancy_threshold, 0.01, 0.99);
+  node.Read("free_threshold", &config.free_threshold, 0.001, 0.99);
   node.Read("voxel_filter_m", &config.voxel_filter_m, 0.005, 2.0);
   auto status = ValidateMappingConfig(config, node.file());
   if (!status) node.Fail("occupancy_threshold", status.error().message);
@@ -41,6 +42,10 @@ robotio::Status ValidateMappingConfig(const MappingConfig& config, const std::st
                config.occupancy_threshold < config.clamp_max && config.clamp_max < 1.0)) {
     why << "need 0 < clamp_min < occupancy_threshold < clamp_max < 1, got " << config.clamp_min
         << " < " << config.occupancy_threshold << " < " << config.clamp_max;
+  } else if (!(config.free_threshold > config.clamp_min &&
+               config.free_threshold <= config.occupancy_threshold)) {
+    why << "free_threshold must lie in (clamp_min, occupancy_threshold], got "
+        << config.free_threshold;
   }
   if (why.str().empty()) return robotio::Ok{};
   return robotio::Error{source + ": mapping: " + why.str()};

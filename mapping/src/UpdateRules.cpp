@@ -14,6 +14,7 @@ UpdateRules UpdateRules::FromConfig(const MappingConfig& config) {
   rules.clamp_min = octomap::logodds(config.clamp_min);
   rules.clamp_max = octomap::logodds(config.clamp_max);
   rules.threshold = octomap::logodds(config.occupancy_threshold);
+  rules.free_threshold = octomap::logodds(config.free_threshold);
   return rules;
 }
 
@@ -30,7 +31,8 @@ float DynamicIncrement(StaticState previous, Observation z, const UpdateRules& r
 }
 
 StaticState ClassifyStatic(float static_log_odds, const UpdateRules& rules) {
-  return static_log_odds >= rules.threshold ? StaticState::kOccupied : StaticState::kFree;
+  if (static_log_odds >= rules.threshold) return StaticState::kOccupied;
+  return static_log_odds < rules.free_threshold ? StaticState::kFree : StaticState::kUnknown;
 }
 
 DualLogOdds ApplyObservation(DualLogOdds previous, bool known, Observation z,

@@ -27,7 +27,11 @@ CellState ProjectColumn(const VoxelMapView& view, double x_m, double y_m,
     }
     const VoxelState s = view.StaticState(p);
     if (std::abs(z) <= config.floor_band_m) {
-      if (s == VoxelState::kOccupied) floor_seen = true;
+      // Floor that went to the dynamic channel (grazing rays cleared it first) is still
+      // something the wheels can stand on.
+      if (s == VoxelState::kOccupied || view.DynamicState(p) == VoxelState::kOccupied) {
+        floor_seen = true;
+      }
       if (s == VoxelState::kFree) floor_band_free = true;
     } else if (z < -config.floor_band_m) {
       if (s == VoxelState::kFree) free_below_floor = true;

@@ -4,6 +4,7 @@
 
 #include "ReferenceIntegrator.hpp"
 #include "SyntheticScene.hpp"
+#include "ThesisRuleConfig.hpp"
 #include "dynamap/mapping/DualMap.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
 
@@ -26,7 +27,7 @@ robotio::DepthRays SingleRay(const Eigen::Vector3f& origin, const Eigen::Vector3
 }
 
 TEST(DualOcTreeTest, SaveLoadRoundTripKeepsBothChannelsExactly) {
-  DualMap map{MappingConfig{}};
+  DualMap map{ThesisRuleConfig()};
   testing::SyntheticScene scene;
   map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
   scene.boxes.push_back({{1.5f, -0.2f, -0.5f}, {1.8f, 0.2f, 1.2f}});
@@ -51,7 +52,7 @@ TEST(DualOcTreeTest, SaveLoadRoundTripKeepsBothChannelsExactly) {
 }
 
 TEST(DualOcTreeTest, InnerNodesHoldTheMaximumOfBothChannels) {
-  DualMap map{MappingConfig{}};
+  DualMap map{ThesisRuleConfig()};
   testing::SyntheticScene scene;
   map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
   scene.boxes.push_back({{1.5f, -0.2f, -0.5f}, {1.8f, 0.2f, 1.2f}});
@@ -71,7 +72,7 @@ TEST(DualOcTreeTest, InnerNodesHoldTheMaximumOfBothChannels) {
 // Trap: eight equal leaves are pruned into one inner node. Observing one of them must
 // expand it so that only that voxel changes, in both channels.
 TEST(DualOcTreeTest, ObservingOneVoxelOfAPrunedNodeChangesOnlyThatVoxel) {
-  DualMap map{MappingConfig{}};
+  DualMap map{ThesisRuleConfig()};
   DualOcTree& tree = map.tree();
   // Eight known-free leaves of one 2x2x2 cube at the origin, pruned into their parent.
   const octomap::OcTreeKey corner = tree.coordToKey(octomap::point3d(0.01f, 0.01f, 0.01f));
@@ -129,7 +130,7 @@ TEST(DualOcTreeTest, PrunedNodesExpandCorrectlyWhenBuiltDirectly) {
 // Trap: OctoMap's updateNode returns early when the occupancy is clamped. A static value
 // at its clamp must not stop the dynamic channel from changing.
 TEST(DualOcTreeTest, ClampedStaticValueDoesNotStopTheDynamicUpdate) {
-  DualMap map{MappingConfig{}};
+  DualMap map{ThesisRuleConfig()};
   const Eigen::Vector3f origin(0, 0, 0), end(1.025f, 0.025f, 0.025f);
   // Observed free many times: the static value sits at the lower clamp.
   for (int i = 0; i < 30; ++i) map.InsertRays(SingleRay(origin, end * 2.0f, false));
@@ -144,7 +145,7 @@ TEST(DualOcTreeTest, ClampedStaticValueDoesNotStopTheDynamicUpdate) {
 }
 
 TEST(DualOcTreeTest, HitBeatsTraversalWithinOneScan) {
-  DualMap map{MappingConfig{}};
+  DualMap map{ThesisRuleConfig()};
   const Eigen::Vector3f origin(0, 0, 0);
   robotio::DepthRays rays;
   rays.origin = origin;
@@ -158,7 +159,7 @@ TEST(DualOcTreeTest, HitBeatsTraversalWithinOneScan) {
 }
 
 TEST(DualOcTreeTest, RaysBeyondMaxRangeClearUpToItWithoutAHit) {
-  MappingConfig config;
+  MappingConfig config = ThesisRuleConfig();  // One pass: free at once.
   config.max_range_m = 2.0;
   DualMap map{config};
   map.InsertPointCloud({Eigen::Vector3f(3.02f, 0.02f, 0.02f)}, Eigen::Vector3f(0, 0, 0));
@@ -168,7 +169,7 @@ TEST(DualOcTreeTest, RaysBeyondMaxRangeClearUpToItWithoutAHit) {
 }
 
 TEST(DualOcTreeTest, NeverObservedVoxelsAreUnknown) {
-  DualMap map{MappingConfig{}};
+  DualMap map{ThesisRuleConfig()};
   EXPECT_EQ(map.StaticState({1, 1, 1}), VoxelState::kUnknown);
   EXPECT_EQ(map.DynamicState({1, 1, 1}), VoxelState::kUnknown);
   map.InsertRays(SingleRay({0, 0, 0}, {1.02f, 0.02f, 0.02f}, true));

@@ -6,6 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "SyntheticScene.hpp"
+#include "ThesisRuleConfig.hpp"
 #include "dynamap/mapping/DualMap.hpp"
 #include "dynamap/mapping/MapExport.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
@@ -29,7 +30,7 @@ std::string Temp(const std::string& name) { return ::testing::TempDir() + "/" + 
 
 // A map with a wall (static) and a person who stepped into seen free space (dynamic).
 DualMap SceneMap() {
-  DualMap map{MappingConfig{}};
+  DualMap map{ThesisRuleConfig()};
   testing::SyntheticScene scene;
   map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 1.0f));
   scene.boxes.push_back({{1.5f, -0.2f, -0.5f}, {1.8f, 0.2f, 1.2f}});

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "ThesisRuleConfig.hpp"
 #include "dynamap/mapping/UpdateRules.hpp"
 
 namespace dynamap::mapping {
@@ -7,7 +8,7 @@ namespace {
 
 class UpdateRulesTest : public ::testing::Test {
  protected:
-  UpdateRules rules_ = UpdateRules::FromConfig(MappingConfig{});
+  UpdateRules rules_ = UpdateRules::FromConfig(ThesisRuleConfig());
 };
 
 // Table 4.1, one test per row: (previous static state, observation) -> Low/High.
@@ -73,6 +74,31 @@ TEST_F(UpdateRulesTest, RegularModeIsAlgorithm2AndNeverDynamic) {
   const DualLogOdds fresh = ApplyObservation({}, false, Observation::kFree, rules);
   EXPECT_FLOAT_EQ(fresh.static_log_odds, rules.low);
   EXPECT_FLOAT_EQ(fresh.dynamic_log_odds, rules.clamp_min);
+}
+
+TEST(FreeThresholdTest, OneGrazingMissDoesNotBarAVoxelFromTheStaticMap) {
+  // Default settings: a voxel needs more than one free observation to count as free, so a
+  // floor voxel crossed once by a grazing ray and then hit is still static.
+  const UpdateRules rules = UpdateRules::FromConfig(MappingConfig{});
+  const DualLogOdds missed = ApplyObservation({}, false, Observation::kFree, rules);
+  EXPECT_EQ(ClassifyStatic(missed.static_log_odds, rules), StaticState::kUnknown);
+  const DualLogOdds hit = ApplyObservation(missed, true, Observation::kOccupied, rules);
+  EXPECT_FLOAT_EQ(hit.static_log_odds, rules.low + rules.high);  // Unknown + occupied = High.
+  EXPECT_EQ(ClassifyStatic(hit.static_log_odds, rules), StaticState::kOccupied);
+  // Repeated free evidence still makes it free, and then a hit goes to the dynamic map.
+  DualLogOdds free = missed;
+  for (int i = 0; i < 3; ++i) free = ApplyObservation(free, true, Observation::kFree, rules);
+  EXPECT_EQ(ClassifyStatic(free.static_log_odds, rules), StaticState::kFree);
+  const DualLogOdds appeared = ApplyObservation(free, true, Observation::kOccupied, rules);
+  EXPECT_GT(appeared.dynamic_log_odds, free.dynamic_log_odds);
+}
+
+TEST(MappingConfigTest, FreeThresholdAboveTheOccupancyThresholdIsRejected) {
+  MappingConfig config;
+  config.free_threshold = 0.6;
+  const auto status = ValidateMappingConfig(config, "m.yaml");
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("free_threshold"), std::string::npos);
 }
 
 TEST(MappingConfigTest, ParsesYamlAndRejectsBadValuesNamingTheKey) {

@@ -27,6 +27,11 @@ struct MappingConfig {
   // A voxel is occupied in a channel when its probability is >= this (OctoMap's rule);
   // it also splits a known static voxel into free / occupied for the tables.
   double occupancy_threshold = 0.5;
+  // A known voxel counts as *free* for the tables only once its static probability is
+  // below this; between it and occupancy_threshold it still counts as unknown. One grazing
+  // ray through a floor or wall voxel is then not enough to bar that voxel from the static
+  // map for ever (Free + Occupied gives Low in Table 4.1). 0.5 is the thesis's rule.
+  double free_threshold = 0.25;
   double voxel_filter_m = 0.05;  // m, leaf of the preprocessing voxel grid (base frame).
 };
 

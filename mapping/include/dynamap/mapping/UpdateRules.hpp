@@ -20,6 +20,7 @@ struct UpdateRules {
   float clamp_min = 0.0f;  // log-odds.
   float clamp_max = 0.0f;  // log-odds.
   float threshold = 0.0f;  // log-odds of occupancy_threshold.
+  float free_threshold = 0.0f;  // log-odds of free_threshold (below: free; between: unknown).
 
   [[nodiscard]] static UpdateRules FromConfig(const MappingConfig& config);
 };
@@ -35,7 +36,7 @@ struct DualLogOdds {
 [[nodiscard]] float StaticIncrement(StaticState previous, Observation z, const UpdateRules& r);
 [[nodiscard]] float DynamicIncrement(StaticState previous, Observation z, const UpdateRules& r);
 
-// Classifies a known voxel's static log-odds (unknown voxels do not exist in the tree).
+// Classifies a known voxel's static log-odds; too little evidence either way is unknown.
 [[nodiscard]] StaticState ClassifyStatic(float static_log_odds, const UpdateRules& rules);
 
 // The new values of a voxel after one observation. `known` is false for a voxel never
