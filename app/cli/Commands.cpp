@@ -2,6 +2,7 @@
 
 #include "cli/CalibrateCommand.hpp"
 #include "cli/EvalTrajectoryCommand.hpp"
+#include "cli/ExploreCommand.hpp"
 #include "cli/MapCommand.hpp"
 #include "cli/PlanGridCommand.hpp"
 #include "cli/RecordCommand.hpp"
@@ -12,6 +13,7 @@ namespace dynamap::app {
 void RegisterCommands(CLI::App& app) {
   RegisterCalibrateCommand(app);
   RegisterEvalTrajectoryCommand(app);
+  RegisterExploreCommand(app);
   RegisterMapCommand(app);
   RegisterPlanGridCommand(app);
   RegisterRecordCommand(app);

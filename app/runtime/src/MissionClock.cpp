@@ -4,9 +4,17 @@
 
 namespace dynamap::app::runtime {
 
-MissionClock::MissionClock(double speed) : speed_(speed > 0.0 ? speed : 1.0) {}
+MissionClock::MissionClock(double speed) : speed_(speed) {}
 
 void MissionClock::AdvanceTo(std::int64_t now_ns) {
+  if (!paced()) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      now_ns_ = now_ns;
+    }
+    advanced_.notify_all();
+    return;
+  }
   std::chrono::steady_clock::time_point due;
   {
     std::lock_guard<std::mutex> lock(mutex_);

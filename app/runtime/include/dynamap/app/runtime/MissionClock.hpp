@@ -14,7 +14,8 @@ namespace dynamap::app::runtime {
 
 class MissionClock {
  public:
-  // speed: simulated seconds per wall second (> 0).
+  // speed: simulated seconds per wall second; <= 0 does not pace at all (the driver then
+  // waits for its consumers instead, see SimulationDriver).
   explicit MissionClock(double speed);
 
   // Sets simulated time to `now_ns` (monotonic), then sleeps as needed to keep pace.
@@ -23,6 +24,7 @@ class MissionClock {
   void Reanchor();
   [[nodiscard]] std::int64_t now_ns() const;
   [[nodiscard]] double speed() const { return speed_; }
+  [[nodiscard]] bool paced() const { return speed_ > 0.0; }
 
   // Blocks until simulated time reaches `target_ns`; false when the mission stops first.
   bool WaitUntil(std::int64_t target_ns, const RunControl& control) const;

@@ -1,0 +1,141 @@
+#include "cli/ExploreCommand.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <thread>
+
+#include "cli/CommandSupport.hpp"
+#include "cli/ProgressLine.hpp"
+#include "dynamap/app/runtime/MissionRuntime.hpp"
+
+namespace dynamap::app {
+
+namespace {
+
+struct ExploreOptions {
+  std::string world = ResourcePath("worlds/office.yaml");
+  std::string rig = ResourcePath("rigs/two_kinects.yaml");
+  std::string robot = ResourcePath("robots/segway_rmp50.yaml");
+  std::string out;
+  std::uint64_t seed = 1;
+  double max_time_s = 1200.0;
+  double speed = 0.0;
+  std::string targets = "default";
+  std::string poses = "slam";
+  int kinect_width = 320;
+  bool record = false;
+  bool headless = false;
+};
+
+std::string TimestampedRunDir() {
+  const std::time_t now = std::time(nullptr);
+  char name[64];
+  std::strftime(name, sizeof(name), "runs/explore-%Y%m%d-%H%M%S", std::localtime(&now));
+  return name;
+}
+
+const char* TargetText(const runtime::MissionSnapshot& s) {
+  if (!s.has_goal) return s.exploration_done ? "done" : "looking around";
+  return planning::TargetKindName(s.target_kind);
+}
+
+void Run(const ExploreOptions& options) {
+  runtime::MissionConfig config;
+  config.world_file = options.world;
+  config.rig_file = options.rig;
+  config.robot_file = options.robot;
+  config.out_dir = options.out.empty() ? TimestampedRunDir() : options.out;
+  config.seed = options.seed;
+  config.max_time_s = options.max_time_s;
+  config.speed = options.speed;
+  config.kinect_width = options.kinect_width;
+  config.kinect_height = options.kinect_width * 3 / 4;
+  config.record = options.record;
+  config.poses = options.poses == "odometry"      ? runtime::PoseSource::kOdometry
+                 : options.poses == "groundtruth" ? runtime::PoseSource::kGroundTruth
+                                                  : runtime::PoseSource::kSlam;
+  config.planning.targets.strategy = options.targets == "nearest-frontier" ? "nearest-frontier"
+                                                                           : "gain";
+  auto runtime = runtime::MissionRuntime::Create(config);
+  if (!runtime) FailCommand("explore", runtime.error().message);
+
+  spdlog::info("exploring {} (seed {}, poses {}, {}), results in {}", config.world_file,
+               config.seed, options.poses,
+               config.speed > 0 ? std::to_string(config.speed) + "x real time"
+                                : std::string("as fast as the machine allows"),
+               config.out_dir);
+  const auto wall_start = std::chrono::steady_clock::now();
+  (*runtime)->Start();
+  ProgressLine progress("exploring");
+  while (!(*runtime)->finished()) {
+    const runtime::MissionSnapshot s = (*runtime)->Snapshot();
+    if (s.state == runtime::MissionState::kStopping) break;
+    double known_m2 = 0.0;
+    if (s.grid) {
+      for (const auto cell : s.grid->cells) {
+        if (cell == planning::CellState::kNavigable) known_m2 += 1.0;
+      }
+      known_m2 *= s.grid->resolution_m * s.grid->resolution_m;
+    }
+    char detail[240];
+    std::snprintf(detail, sizeof(detail),
+                  "t %6.1f s  known floor %6.1f m2  driven %6.1f m  v %4.2f w %5.2f  stops %lld  %s",
+                  s.sim_time_s, known_m2, s.distance_m, s.command.v, s.command.omega,
+                  static_cast<long long>(s.guard_stops), TargetText(s));
+    progress.Update(s.sim_time_s / config.max_time_s, detail);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  (*runtime)->Wait();
+  auto report = (*runtime)->Finish();
+  if (!report) FailCommand("explore", report.error().message);
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  char summary[400];
+  std::snprintf(summary, sizeof(summary),
+                "%s in %.0f s simulated (%.0f s wall): explored %.1f%%, surfaces %.1f%%, path "
+                "%.1f m, ATE %.3f m, SA %.3f, DA %.3f, collisions %lld",
+                report->completed ? "complete" : "stopped", report->mission_time_s, wall_s,
+                100.0 * report->explored_free_fraction, 100.0 * report->surface_coverage,
+                report->path_length_m, report->ate_rmse_m, report->static_accuracy,
+                report->dynamic_accuracy, static_cast<long long>(report->collisions));
+  progress.Finish(summary);
+  std::printf("results: %s (report.json, map2d.png, map.ot, static.bt, dynamic.bt, ...)\n",
+              config.out_dir.c_str());
+}
+
+}  // namespace
+
+void RegisterExploreCommand(CLI::App& app) {
+  auto options = std::make_shared<ExploreOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "explore", "Explore a simulated world autonomously: SLAM, dual static/dynamic map, "
+                 "target planning, D* Lite, collision guard; writes maps and report.json");
+  cmd->add_option("--world", options->world, "World file")->check(CLI::ExistingFile);
+  cmd->add_option("--rig", options->rig, "Kinect rig file")->check(CLI::ExistingFile);
+  cmd->add_option("--robot", options->robot, "Robot file")->check(CLI::ExistingFile);
+  cmd->add_option("--out", options->out, "Output folder (default: a new runs/explore-* folder)");
+  cmd->add_option("--seed", options->seed, "Simulator seed");
+  cmd->add_option("--max-time", options->max_time_s, "Simulated seconds before the mission ends")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--speed", options->speed,
+                  "Simulated seconds per wall second; 0 = as fast as the machine allows "
+                  "without dropping frames")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--targets", options->targets, "Target planner")
+      ->check(CLI::IsMember({"default", "nearest-frontier"}));
+  cmd->add_option("--poses", options->poses, "Where frames are placed from")
+      ->check(CLI::IsMember({"slam", "odometry", "groundtruth"}));
+  cmd->add_option("--kinect-width", options->kinect_width,
+                  "Simulated Kinect image width in px (height = 3/4 of it; 640 = full Kinect)")
+      ->check(CLI::Range(80, 640));
+  cmd->add_flag("--record", options->record, "Also write the run as a recording (recording/)");
+  cmd->add_flag("--headless", options->headless,
+                "Run without a window (explore always runs in the terminal; the GUI has its "
+                "own Mission workspace)");
+  cmd->callback([options] { Run(*options); });
+}
+
+}  // namespace dynamap::app

@@ -1,0 +1,45 @@
+// The control thread of the mission runtime (thesis ch. 7): at a fixed rate of simulated
+// time, checks the newest raw depth frames with the collision guard (it never waits on SLAM
+// or planning), follows the newest planned path, and publishes the velocity command.
+#pragma once
+
+#include <cstdint>
+
+#include "dynamap/app/runtime/Mediator.hpp"
+#include "dynamap/planning/CollisionGuard.hpp"
+#include "dynamap/planning/CostField.hpp"
+#include "dynamap/planning/PathFollower.hpp"
+#include "dynamap/robotio/Rig.hpp"
+
+namespace dynamap::app::runtime {
+
+struct ControlWorkerConfig {
+  double rate_hz = 20.0;                  // Hz of simulated time.
+  double look_around_yaw_rate = 0.5;      // rad/s of the first look around.
+  double initial_turn_rad = 6.3;          // rad turned in place before following plans.
+  double recovery_s = 1.0;                // s of the guard's recovery motion after a stop.
+  planning::PathFollowerConfig follower;
+  planning::CollisionGuardConfig guard;
+  planning::CostFieldConfig cost;         // To read clearance off the planner's cost grid.
+};
+
+class ControlWorker {
+ public:
+  ControlWorker(Mediator& mediator, robotio::Rig rig, ControlWorkerConfig config);
+  void Run();  // Thread body: until the mission stops; leaves the base commanded to stop.
+
+ private:
+  [[nodiscard]] robotio::VelocityCommand Step(std::int64_t now_ns, double dt_s);
+
+  Mediator& mediator_;
+  robotio::Rig rig_;
+  ControlWorkerConfig config_;
+  planning::PathFollower follower_;
+  std::uint64_t plan_version_ = 0;
+  robotio::VelocityCommand last_;
+  std::int64_t recovery_until_ns_ = -1;
+  robotio::VelocityCommand recovery_;
+  double turned_rad_ = 0.0;
+};
+
+}  // namespace dynamap::app::runtime

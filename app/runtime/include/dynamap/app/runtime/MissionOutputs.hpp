@@ -1,0 +1,31 @@
+// The files a mission leaves behind besides the 3D maps: the projected map as a picture
+// with the path taken and the last targets (map2d.png), as a ROS map_server map
+// (map2d.pgm + map2d.yaml), and report.json.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dynamap/app/runtime/MissionSnapshot.hpp"
+#include "dynamap/planning/GridMap.hpp"
+#include "dynamap/robotio/Expected.hpp"
+
+namespace dynamap::app::runtime {
+
+// Navigable white, obstacles black, holes blue, unknown grey; the true path green (when
+// known), the estimated path orange, targets and the goal marked; 1 px per cell, north up.
+[[nodiscard]] robotio::Status WriteMapPicture(const planning::GridMap& grid,
+                                              const std::vector<robotio::Pose2D>& estimated,
+                                              const std::vector<robotio::Pose2D>& truth,
+                                              const std::vector<Eigen::Vector2d>& targets,
+                                              const std::string& file);
+
+// map_server format: PGM (free 254, occupied 0, unknown 205) and its YAML description.
+[[nodiscard]] robotio::Status WriteRosMap(const planning::GridMap& grid, const std::string& pgm,
+                                          const std::string& yaml);
+
+[[nodiscard]] robotio::Status WriteReportJson(const MissionReport& report,
+                                              const std::string& extra_json_fields,
+                                              const std::string& file);
+
+}  // namespace dynamap::app::runtime

@@ -1,0 +1,71 @@
+// One autonomous exploration mission in the simulator (thesis 2.2): the mediator and its
+// four threads — sensors (simulator), SLAM + mapping, planning, control. Start, pause,
+// resume, stop; snapshots for front ends at any time; on the end, every result saved.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "dynamap/app/runtime/MissionConfig.hpp"
+#include "dynamap/app/runtime/MissionSnapshot.hpp"
+#include "dynamap/robotio/Expected.hpp"
+#include "dynamap/robotio/RecordingWriter.hpp"
+#include "dynamap/robotio/Rig.hpp"
+#include "dynamap/robotio/sim/World.hpp"
+
+namespace dynamap::app::runtime {
+
+class Mediator;
+class SimulationDriver;
+class MappingWorker;
+class PlanningWorker;
+class ControlWorker;
+
+class MissionRuntime {
+ public:
+  // Loads world, rig and robot files; errors name the file and key, before anything runs.
+  [[nodiscard]] static robotio::Expected<std::unique_ptr<MissionRuntime>> Create(
+      MissionConfig config);
+  ~MissionRuntime();
+  MissionRuntime(const MissionRuntime&) = delete;
+  MissionRuntime& operator=(const MissionRuntime&) = delete;
+
+  void Start();
+  bool Pause();
+  bool Resume();
+  void Stop();
+  // Blocks until the mission ends (exploration complete, time limit or Stop()), then joins
+  // the threads. Returns at once when it has already ended.
+  void Wait();
+  [[nodiscard]] bool finished() const;
+
+  // A consistent copy of what the workers published last; never blocks them for long.
+  [[nodiscard]] MissionSnapshot Snapshot() const;
+
+  // After Wait(): scores the run and writes every result file into the output folder.
+  [[nodiscard]] robotio::Expected<MissionReport> Finish();
+
+  [[nodiscard]] const MissionConfig& config() const { return config_; }
+  [[nodiscard]] const robotio::sim::World& world() const { return world_; }
+
+ private:
+  MissionRuntime(MissionConfig config, robotio::sim::World world);
+  void Monitor();
+
+  MissionConfig config_;
+  robotio::sim::World world_;
+  robotio::Rig rig_;
+  double footprint_radius_m_ = 0.36;
+  std::unique_ptr<Mediator> mediator_;
+  std::unique_ptr<robotio::RecordingWriter> recording_;
+  std::unique_ptr<SimulationDriver> driver_;
+  std::unique_ptr<MappingWorker> mapping_;
+  std::unique_ptr<PlanningWorker> planning_;
+  std::unique_ptr<ControlWorker> control_;
+  std::vector<std::thread> threads_;
+  bool joined_ = false;
+};
+
+}  // namespace dynamap::app::runtime

@@ -1,0 +1,68 @@
+// What a front end shows of a running mission, copied out of the mediator: pose, trail,
+// projected grid, targets and path, counters; and the scored report at the end.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dynamap/app/runtime/RunControl.hpp"
+#include "dynamap/planning/GridMap.hpp"
+#include "dynamap/planning/TargetPlanner.hpp"
+#include "dynamap/robotio/DepthFrame.hpp"
+#include "dynamap/robotio/Pose2D.hpp"
+#include "dynamap/robotio/Readings.hpp"
+
+namespace dynamap::app::runtime {
+
+struct MissionSnapshot {
+  MissionState state = MissionState::kIdle;
+  double sim_time_s = 0.0;
+  robotio::Pose2D pose;                     // Estimated T_map_base now.
+  std::vector<robotio::Pose2D> trail;       // Estimated path so far.
+  std::shared_ptr<const planning::GridMap> grid;  // Projected map (may be null early).
+  planning::TargetKind target_kind = planning::TargetKind::kFrontier;
+  bool has_goal = false;
+  Eigen::Vector2d goal = Eigen::Vector2d::Zero();
+  std::vector<Eigen::Vector2d> path;
+  std::vector<Eigen::Vector2d> candidates;
+  std::vector<robotio::DepthFrame> depth;   // Newest frame per Kinect.
+  double distance_m = 0.0;                  // Odometry distance driven.
+  std::int64_t frames_delivered = 0;
+  std::int64_t frames_dropped = 0;
+  std::int64_t frames_processed = 0;
+  std::int64_t collisions = 0;
+  std::int64_t guard_stops = 0;
+  robotio::VelocityCommand command;         // Last velocity command sent.
+  bool exploration_done = false;
+};
+
+struct MissionReport {
+  bool completed = false;               // Planner judged exploration done, robot back home.
+  double explored_free_fraction = 0.0;
+  double surface_coverage = 0.0;
+  double path_length_m = 0.0;           // True path driven.
+  double mission_time_s = 0.0;
+  std::int64_t collisions = 0;
+  double ate_rmse_m = 0.0;
+  double odometry_ate_rmse_m = 0.0;
+  double static_accuracy = 0.0;
+  double dynamic_accuracy = 0.0;
+  double associated_accuracy = 0.0;
+  std::int64_t frames_delivered = 0;
+  std::int64_t frames_dropped = 0;
+  std::int64_t frames_processed = 0;
+  std::int64_t registrations_accepted = 0;
+  std::int64_t registrations_rejected = 0;
+  std::int64_t guard_stops = 0;
+  std::int64_t plans = 0;
+  double plan_median_ms = 0.0;
+  double plan_p95_ms = 0.0;
+  double insert_median_ms = 0.0;
+  double insert_p95_ms = 0.0;
+  double wall_time_s = 0.0;
+  std::vector<std::string> files;       // Written into the output folder.
+};
+
+}  // namespace dynamap::app::runtime

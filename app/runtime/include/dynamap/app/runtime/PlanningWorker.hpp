@@ -1,0 +1,53 @@
+// The planning thread of the mission runtime (thesis 6.2-6.3): on the newest projected
+// grid, chooses a target (frontier, inspection or home), plans to it with D* Lite
+// (incrementally while the goal stays), shortens the path and publishes it. Declares the
+// exploration complete when the planner finds nothing worth reaching and the robot is home.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "dynamap/app/runtime/Mediator.hpp"
+#include "dynamap/planning/PathPlanner.hpp"
+#include "dynamap/planning/PlanningConfig.hpp"
+#include "dynamap/planning/SurfaceCoverage.hpp"
+#include "dynamap/planning/TargetPlanner.hpp"
+#include "dynamap/planning/TemporaryObstacles.hpp"
+
+namespace dynamap::app::runtime {
+
+struct PlanningWorkerConfig {
+  planning::PlanningConfig planning;
+  double known_floor_radius_m = 0.8;  // m around visited poses: unseen floor is drivable.
+  double target_timeout_s = 60.0;     // s without reaching a goal before it counts as failed.
+  double resolution_m = 0.05;         // m, cell edge of the projected map.
+};
+
+class PlanningWorker {
+ public:
+  PlanningWorker(Mediator& mediator, PlanningWorkerConfig config);
+
+  void Run();  // Thread body: until the mission stops.
+
+  [[nodiscard]] const std::vector<double>& plan_ms() const { return plan_ms_; }
+  [[nodiscard]] const planning::SurfaceCoverage& coverage() const { return coverage_; }
+
+ private:
+  void PlanOnce(double now_s);
+  // `seen` with the floor around visited places (too close for the Kinects) drivable.
+  [[nodiscard]] planning::GridMap PrepareGrid(const planning::GridMap& seen,
+                                              const robotio::Pose2D& pose) const;
+
+  Mediator& mediator_;
+  PlanningWorkerConfig config_;
+  planning::TargetPlanner targets_;
+  planning::SurfaceCoverage coverage_;
+  planning::TemporaryObstacles obstacles_;
+  std::unique_ptr<planning::PathPlanner> search_;  // D* Lite (or A*), kept across plans.
+  planning::GridIndex goal_{-1, -1};
+  planning::TargetCandidate goal_target_;  // What the goal was chosen for (blacklisting).
+  double goal_since_s_ = 0.0;
+  std::vector<double> plan_ms_;
+};
+
+}  // namespace dynamap::app::runtime

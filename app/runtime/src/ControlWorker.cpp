@@ -1,0 +1,79 @@
+#include "dynamap/app/runtime/ControlWorker.hpp"
+
+#include "dynamap/planning/CostField.hpp"
+#include "dynamap/robotio/Time.hpp"
+
+namespace dynamap::app::runtime {
+
+ControlWorker::ControlWorker(Mediator& mediator, robotio::Rig rig, ControlWorkerConfig config)
+    : mediator_(mediator),
+      rig_(std::move(rig)),
+      config_(config),
+      follower_(config.follower) {}
+
+robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
+  // Guard first, on raw frames: a person stepping in is seen before any map knows.
+  std::vector<robotio::DepthFrame> frames;
+  for (const auto& slot : mediator_.latest_depth) {
+    if (auto frame = slot.Get()) frames.push_back(std::move(frame->value));
+  }
+  std::vector<const robotio::DepthFrame*> pointers;
+  for (const auto& f : frames) pointers.push_back(&f);
+  const robotio::Pose2D pose = mediator_.CurrentPose();
+  const planning::GuardVerdict verdict =
+      planning::CheckCollision(pointers, rig_, last_, config_.guard);
+  if (verdict.stop) {
+    ++mediator_.counters.guard_stops;
+    std::vector<Eigen::Vector2d> obstacles_map;
+    for (const Eigen::Vector2d& p : verdict.obstacle_base) {
+      const robotio::Pose2D q = pose.Compose({p.x(), p.y(), 0.0});
+      obstacles_map.emplace_back(q.x, q.y);
+    }
+    mediator_.ReportObstacles(obstacles_map);
+    recovery_ = verdict.recovery;
+    recovery_until_ns_ = now_ns + robotio::SecondsToNanos(config_.recovery_s);
+    follower_.Stop();
+    return {now_ns, 0.0, 0.0};
+  }
+  if (now_ns < recovery_until_ns_) return {now_ns, recovery_.v, recovery_.omega};
+
+  // Look around once before following any plan: the first view is narrow.
+  if (turned_rad_ < config_.initial_turn_rad) {
+    turned_rad_ += config_.look_around_yaw_rate * dt_s;
+    return {now_ns, 0.0, config_.look_around_yaw_rate};
+  }
+  mediator_.counters.looked_around = true;
+  const auto plan = mediator_.plan.Get();
+  if (!plan) return {now_ns, 0.0, 0.0};
+  if (plan->version != plan_version_) {
+    plan_version_ = plan->version;
+    follower_.SetPath(plan->value.path_map);
+  }
+  if (!plan->value.has_goal || plan->value.path_map.empty()) return {now_ns, 0.0, 0.0};
+  double clearance = config_.guard.footprint_radius_m;
+  if (plan->value.map && plan->value.clearance) {
+    const planning::GridIndex cell = plan->value.map->CellAt(pose.x, pose.y);
+    if (plan->value.map->Contains(cell)) {
+      clearance = planning::Clearance(*plan->value.clearance, cell, config_.cost);
+    }
+  }
+  planning::FollowerOutput out = follower_.Step(pose, clearance, dt_s);
+  out.command.stamp_ns = now_ns;
+  return out.command;
+}
+
+void ControlWorker::Run() {
+  const std::int64_t period_ns = robotio::SecondsToNanos(1.0 / config_.rate_hz);
+  std::int64_t next_ns = 0;
+  while (mediator_.control.WaitWhilePaused()) {
+    if (!mediator_.clock.WaitUntil(next_ns, mediator_.control)) break;
+    const std::int64_t now_ns = mediator_.clock.now_ns();
+    last_ = Step(now_ns, 1.0 / config_.rate_hz);
+    mediator_.command.Set(last_);
+    mediator_.counters.control_done_ns = now_ns;
+    next_ns = now_ns + period_ns;
+  }
+  mediator_.command.Set({mediator_.clock.now_ns(), 0.0, 0.0});
+}
+
+}  // namespace dynamap::app::runtime

@@ -1,0 +1,158 @@
+#include "dynamap/app/runtime/MappingWorker.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "dynamap/planning/DualMapView.hpp"
+#include "dynamap/mapping/MapFiles.hpp"
+#include "dynamap/robotio/DepthProjection.hpp"
+
+namespace dynamap::app::runtime {
+
+namespace {
+
+double Percentile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
+}
+
+}  // namespace
+
+MappingWorker::MappingWorker(Mediator& mediator, robotio::Rig rig, MappingWorkerConfig config)
+    : mediator_(mediator),
+      rig_(std::move(rig)),
+      config_(std::move(config)),
+      map_(config_.mapping),
+      projector_(config_.area, config_.projection),
+      accuracy_(config_.mapping.resolution_m, config_.mapping.max_range_m,
+                config_.evaluation_stride) {
+  if (config_.poses == PoseSource::kSlam) slam_.emplace(config_.slam, config_.mapping, rig_);
+}
+
+MappingWorker::~MappingWorker() = default;
+
+std::uint64_t MappingWorker::VoxelId(const Eigen::Vector3f& p) const {
+  const double r = config_.mapping.resolution_m;
+  const auto pack = [r](float v) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / r)) + (1 << 20)) &
+           0x1fffff;
+  };
+  return pack(p.x()) | (pack(p.y()) << 21) | (pack(p.z()) << 42);
+}
+
+bool MappingWorker::Inspected(const Eigen::Vector3f& p) const {
+  const float r = static_cast<float>(config_.mapping.resolution_m);
+  for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dz = -1; dz <= 1; ++dz) {
+        if (inspected_voxels_.count(VoxelId(p + Eigen::Vector3f(dx * r, dy * r, dz * r)))) {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+void MappingWorker::Score(const CapturedFrame& frame, const robotio::KinectMount& mount,
+                          const robotio::Pose2D& T_map_base, const robotio::Pose2D& odometry) {
+  const Eigen::Isometry3d T = T_map_base.ToIsometry();
+  if (frame.labels) accuracy_.Add(frame.depth, *frame.labels, mount, T);
+  // Surfaces hit from within the inspection distance, and the grid columns the frame
+  // looked through (only those can change in the projection).
+  const robotio::DepthRays rays = robotio::DepthToRays(frame.depth, mount, T, 4);
+  for (std::size_t i = 0; i < rays.ends.size(); ++i) {
+    if (rays.hit[i] && (rays.ends[i] - rays.origin).norm() <= config_.inspection_distance_m) {
+      inspected_voxels_.insert(VoxelId(rays.ends[i]));
+    }
+  }
+  const std::vector<Eigen::Vector2f> columns = planning::TouchedColumns(rays, projector_.map());
+  touched_.insert(touched_.end(), columns.begin(), columns.end());
+  mediator_.pose_fix.Set({frame.depth.stamp_ns, T_map_base, odometry});
+  mediator_.AddEstimate(robotio::ToStampedPose(frame.depth.stamp_ns, T_map_base));
+  mediator_.AddOdometryEstimate(robotio::ToStampedPose(frame.depth.stamp_ns, odometry));
+  ++mediator_.counters.frames_processed;
+}
+
+void MappingWorker::Process(const std::vector<CapturedFrame>& batch) {
+  std::vector<const CapturedFrame*> frames;
+  std::vector<robotio::Pose2D> odometry;
+  for (const CapturedFrame& frame : batch) {
+    const auto sensor = static_cast<std::size_t>(frame.depth.sensor_id);
+    const auto pose = mediator_.odometry.PoseAt(frame.depth.stamp_ns);
+    if (sensor >= rig_.kinects.size() || !pose) continue;  // Cannot be placed yet.
+    frames.push_back(&frame);
+    odometry.push_back(*pose);
+  }
+  if (frames.empty()) return;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<robotio::Pose2D> placed(frames.size());
+  if (slam_) {
+    std::vector<robotio::DepthFrame> depths;
+    for (const CapturedFrame* f : frames) depths.push_back(f->depth);
+    const mapping::SlamStep step = slam_->ProcessScan(depths, odometry);
+    if (step.registered) {
+      ++(step.accepted ? mediator_.counters.registrations_accepted
+                       : mediator_.counters.registrations_rejected);
+    }
+    // The scan's pose is the first frame's; the others follow by their odometry.
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      placed[i] = step.pose.Compose(odometry[0].Between(odometry[i]));
+    }
+  } else {
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      const bool truth = config_.poses == PoseSource::kGroundTruth && frames[i]->true_pose;
+      // The odometry frame starts at the start pose, which is the map frame's origin.
+      placed[i] = truth ? *frames[i]->true_pose : odometry[i];
+      const auto& mount = rig_.kinects[static_cast<std::size_t>(frames[i]->depth.sensor_id)];
+      (void)map_.InsertDepthFrame(frames[i]->depth, mount, placed[i].ToIsometry());
+    }
+  }
+  insert_ms_.push_back(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    Score(*frames[i], rig_.kinects[static_cast<std::size_t>(frames[i]->depth.sensor_id)],
+          placed[i], odometry[i]);
+  }
+}
+
+void MappingWorker::Reproject() {
+  (void)projector_.Update(planning::DualMapView(map()), touched_);
+  touched_.clear();
+  mediator_.grid.Set(std::make_shared<const planning::GridMap>(projector_.map()));
+}
+
+void MappingWorker::Run() {
+  while (!mediator_.control.stopping()) {
+    const std::vector<CapturedFrame> frames =
+        mediator_.frames.TakeAll(std::chrono::milliseconds(50));
+    if (frames.empty()) continue;
+    std::int64_t newest_received = -1;
+    for (const CapturedFrame& frame : frames) {
+      newest_received = std::max(newest_received, frame.depth.received_ns);
+    }
+    Process(frames);
+    if (!touched_.empty()) Reproject();
+    const std::int64_t now = frames.back().depth.stamp_ns;
+    if (!config_.save_file.empty() &&
+        now - last_save_ns_ >= static_cast<std::int64_t>(config_.save_period_s * 1e9)) {
+      last_save_ns_ = now;
+      if (auto status = mapping::SaveDualMap(map().tree(), config_.save_file); !status) {
+        spdlog::error("{}", status.error().message);
+      }
+    }
+    mediator_.counters.slam_done_ns = newest_received;
+  }
+}
+
+mapping::PointAccuracy MappingWorker::Accuracy() const { return accuracy_.Evaluate(map().tree()); }
+
+double MappingWorker::median_insert_ms() const { return Percentile(insert_ms_, 0.5); }
+double MappingWorker::p95_insert_ms() const { return Percentile(insert_ms_, 0.95); }
+
+}  // namespace dynamap::app::runtime

@@ -1,0 +1,82 @@
+#include "dynamap/app/runtime/Mediator.hpp"
+
+#include <cmath>
+
+namespace dynamap::app::runtime {
+
+namespace {
+constexpr double kTrailSpacingM = 0.1;  // Trail points closer than this are not kept.
+}  // namespace
+
+Mediator::Mediator(double speed, mapping::MotionModelConfig motion)
+    : clock(speed), odometry(motion, 30.0) {}
+
+robotio::Pose2D Mediator::CurrentPose() const {
+  const auto latest = odometry.Latest();
+  const auto fix = pose_fix.Get();
+  if (!latest) return fix ? fix->value.T_map_base : robotio::Pose2D{};
+  if (!fix) return latest->pose;  // Before the first fix the map frame is the odometry's.
+  const robotio::Pose2D since = fix->value.T_odom_base.Between(latest->pose);
+  return fix->value.T_map_base.Compose(since);
+}
+
+void Mediator::ReportObstacles(const std::vector<Eigen::Vector2d>& points_map) {
+  std::lock_guard<std::mutex> lock(obstacles_mutex_);
+  obstacles_.insert(obstacles_.end(), points_map.begin(), points_map.end());
+}
+
+std::vector<Eigen::Vector2d> Mediator::TakeObstacles() {
+  std::lock_guard<std::mutex> lock(obstacles_mutex_);
+  std::vector<Eigen::Vector2d> out;
+  out.swap(obstacles_);
+  return out;
+}
+
+void Mediator::AddEstimate(const robotio::StampedPose& pose) {
+  std::lock_guard<std::mutex> lock(trajectory_mutex_);
+  estimates_.push_back(pose);
+  const robotio::Pose2D p = robotio::Pose2D::FromIsometry(pose.pose);
+  if (trail_.empty() || std::hypot(p.x - trail_.back().x, p.y - trail_.back().y) > kTrailSpacingM) {
+    trail_.push_back(p);
+  }
+}
+
+void Mediator::AddOdometryEstimate(const robotio::StampedPose& pose) {
+  std::lock_guard<std::mutex> lock(trajectory_mutex_);
+  odometry_estimates_.push_back(pose);
+}
+
+robotio::Trajectory Mediator::OdometryEstimates() const {
+  std::lock_guard<std::mutex> lock(trajectory_mutex_);
+  return odometry_estimates_;
+}
+
+void Mediator::AddGroundTruth(const std::vector<robotio::StampedPose>& poses) {
+  std::lock_guard<std::mutex> lock(trajectory_mutex_);
+  ground_truth_.insert(ground_truth_.end(), poses.begin(), poses.end());
+}
+
+robotio::Trajectory Mediator::Estimates() const {
+  std::lock_guard<std::mutex> lock(trajectory_mutex_);
+  return estimates_;
+}
+
+robotio::Trajectory Mediator::GroundTruth() const {
+  std::lock_guard<std::mutex> lock(trajectory_mutex_);
+  return ground_truth_;
+}
+
+std::vector<robotio::Pose2D> Mediator::Trail() const {
+  std::lock_guard<std::mutex> lock(trajectory_mutex_);
+  return trail_;
+}
+
+void Mediator::WakeAll() {
+  control.Stop();
+  frames.Close();
+  clock.WakeAll();
+  plan.WakeAll();
+  grid.WakeAll();
+}
+
+}  // namespace dynamap::app::runtime

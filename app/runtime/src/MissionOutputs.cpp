@@ -1,0 +1,137 @@
+#include "dynamap/app/runtime/MissionOutputs.hpp"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "dynamap/robotio/AtomicFile.hpp"
+
+namespace dynamap::app::runtime {
+
+namespace {
+
+using planning::CellState;
+
+// Image row of grid row y: the map's y axis points up, images count rows down.
+cv::Point Pixel(const planning::GridMap& grid, double x, double y) {
+  const planning::GridIndex c = grid.CellAt(x, y);
+  return {c.x, grid.height - 1 - c.y};
+}
+
+void DrawPath(cv::Mat& image, const planning::GridMap& grid,
+              const std::vector<robotio::Pose2D>& path, const cv::Scalar& colour) {
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    cv::line(image, Pixel(grid, path[i - 1].x, path[i - 1].y), Pixel(grid, path[i].x, path[i].y),
+             colour, 1, cv::LINE_AA);
+  }
+}
+
+}  // namespace
+
+robotio::Status WriteMapPicture(const planning::GridMap& grid,
+                                const std::vector<robotio::Pose2D>& estimated,
+                                const std::vector<robotio::Pose2D>& truth,
+                                const std::vector<Eigen::Vector2d>& targets,
+                                const std::string& file) {
+  cv::Mat image(grid.height, grid.width, CV_8UC3);
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) {
+      cv::Vec3b colour;
+      switch (grid.At({x, y})) {
+        case CellState::kNavigable: colour = {255, 255, 255}; break;
+        case CellState::kObstacle: colour = {40, 40, 40}; break;
+        case CellState::kHole: colour = {200, 120, 30}; break;
+        case CellState::kUnknown: colour = {170, 170, 170}; break;
+      }
+      image.at<cv::Vec3b>(grid.height - 1 - y, x) = colour;
+    }
+  }
+  // Draw at 2x so paths and markers stay readable.
+  cv::Mat big;
+  cv::resize(image, big, cv::Size(), 2.0, 2.0, cv::INTER_NEAREST);
+  const planning::GridMap scaled = [&] {
+    planning::GridMap g;
+    g.width = grid.width * 2;
+    g.height = grid.height * 2;
+    g.resolution_m = grid.resolution_m / 2.0;
+    g.origin_x_m = grid.origin_x_m;
+    g.origin_y_m = grid.origin_y_m;
+    return g;
+  }();
+  DrawPath(big, scaled, truth, cv::Scalar(60, 170, 60));
+  DrawPath(big, scaled, estimated, cv::Scalar(0, 140, 255));
+  for (const auto& t : targets) {
+    cv::drawMarker(big, Pixel(scaled, t.x(), t.y()), cv::Scalar(200, 0, 200), cv::MARKER_DIAMOND,
+                   10, 2);
+  }
+  cv::circle(big, Pixel(scaled, 0.0, 0.0), 6, cv::Scalar(0, 0, 220), 2, cv::LINE_AA);
+  // Scale bar: 1 m.
+  const int metre = static_cast<int>(1.0 / scaled.resolution_m);
+  cv::line(big, {10, big.rows - 12}, {10 + metre, big.rows - 12}, cv::Scalar(0, 0, 0), 3);
+  cv::putText(big, "1 m", {14 + metre, big.rows - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+              cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  return robotio::WriteFileAtomically(file, [&big](const std::string& path) {
+    return cv::imwrite(path, big);
+  });
+}
+
+robotio::Status WriteRosMap(const planning::GridMap& grid, const std::string& pgm,
+                            const std::string& yaml) {
+  cv::Mat image(grid.height, grid.width, CV_8UC1);
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) {
+      std::uint8_t v = 205;
+      const CellState s = grid.At({x, y});
+      if (s == CellState::kNavigable) v = 254;
+      if (s == CellState::kObstacle || s == CellState::kHole) v = 0;
+      image.at<std::uint8_t>(grid.height - 1 - y, x) = v;
+    }
+  }
+  if (auto status = robotio::WriteFileAtomically(
+          pgm, [&image](const std::string& path) { return cv::imwrite(path, image); });
+      !status) {
+    return status;
+  }
+  char text[512];
+  std::snprintf(text, sizeof(text),
+                "image: %s\nresolution: %.6f\norigin: [%.6f, %.6f, 0.0]\nnegate: 0\n"
+                "occupied_thresh: 0.65\nfree_thresh: 0.196\n",
+                std::filesystem::path(pgm).filename().c_str(), grid.resolution_m,
+                grid.origin_x_m, grid.origin_y_m);
+  return robotio::WriteFileAtomically(yaml, std::string(text));
+}
+
+robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra_json_fields,
+                                const std::string& file) {
+  nlohmann::json j = {
+      {"completed", r.completed},
+      {"explored_free_fraction", r.explored_free_fraction},
+      {"surface_coverage", r.surface_coverage},
+      {"path_length_m", r.path_length_m},
+      {"mission_time_s", r.mission_time_s},
+      {"collisions", r.collisions},
+      {"ate_rmse_m", r.ate_rmse_m},
+      {"odometry_ate_rmse_m", r.odometry_ate_rmse_m},
+      {"static_accuracy", r.static_accuracy},
+      {"dynamic_accuracy", r.dynamic_accuracy},
+      {"associated_accuracy", r.associated_accuracy},
+      {"frames_delivered", r.frames_delivered},
+      {"frames_dropped", r.frames_dropped},
+      {"frames_processed", r.frames_processed},
+      {"registrations_accepted", r.registrations_accepted},
+      {"registrations_rejected", r.registrations_rejected},
+      {"guard_stops", r.guard_stops},
+      {"plans", r.plans},
+      {"planner_median_ms", r.plan_median_ms},
+      {"planner_p95_ms", r.plan_p95_ms},
+      {"map_insert_median_ms", r.insert_median_ms},
+      {"map_insert_p95_ms", r.insert_p95_ms},
+      {"wall_time_s", r.wall_time_s},
+      {"files", r.files},
+  };
+  if (!extra_json_fields.empty()) j.update(nlohmann::json::parse(extra_json_fields));
+  return robotio::WriteFileAtomically(file, j.dump(2) + "\n");
+}
+
+}  // namespace dynamap::app::runtime

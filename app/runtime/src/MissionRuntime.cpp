@@ -1,0 +1,302 @@
+#include "dynamap/app/runtime/MissionRuntime.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "dynamap/app/runtime/ControlWorker.hpp"
+#include "dynamap/app/runtime/MappingWorker.hpp"
+#include "dynamap/app/runtime/Mediator.hpp"
+#include "dynamap/app/runtime/MissionEvaluation.hpp"
+#include "dynamap/app/runtime/MissionOutputs.hpp"
+#include "dynamap/app/runtime/PlanningWorker.hpp"
+#include "dynamap/app/runtime/SimulationDriver.hpp"
+#include "dynamap/mapping/MapExport.hpp"
+#include "dynamap/mapping/MapFiles.hpp"
+#include "dynamap/mapping/TrajectoryEvaluation.hpp"
+#include "dynamap/robotio/RecordingWriter.hpp"
+#include "dynamap/robotio/Time.hpp"
+#include "dynamap/robotio/sim/RobotConfig.hpp"
+#include "dynamap/robotio/sim/StaticSurfaces.hpp"
+#include "dynamap/robotio/sim/WorldLoader.hpp"
+
+namespace dynamap::app::runtime {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The projected grid covers the world's floor (in the map frame) plus a margin.
+planning::GridMap AreaFor(const robotio::sim::World& world, double resolution_m) {
+  double min_x = 1e9, min_y = 1e9, max_x = -1e9, max_y = -1e9;
+  for (double x : {world.floor_min.x(), world.floor_max.x()}) {
+    for (double y : {world.floor_min.y(), world.floor_max.y()}) {
+      const robotio::Pose2D p = world.ToMap({x, y, 0.0});
+      min_x = std::min(min_x, p.x);
+      max_x = std::max(max_x, p.x);
+      min_y = std::min(min_y, p.y);
+      max_y = std::max(max_y, p.y);
+    }
+  }
+  constexpr double kMarginM = 1.0;
+  planning::GridMap area(static_cast<int>(std::ceil((max_x - min_x + 2 * kMarginM) / resolution_m)),
+                         static_cast<int>(std::ceil((max_y - min_y + 2 * kMarginM) / resolution_m)),
+                         resolution_m);
+  area.origin_x_m = min_x - kMarginM;
+  area.origin_y_m = min_y - kMarginM;
+  return area;
+}
+
+double Percentile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
+}
+
+std::vector<robotio::Pose2D> ToPoses(const robotio::Trajectory& trajectory) {
+  std::vector<robotio::Pose2D> poses;
+  for (const auto& p : trajectory) poses.push_back(robotio::Pose2D::FromIsometry(p.pose));
+  return poses;
+}
+
+}  // namespace
+
+MissionRuntime::MissionRuntime(MissionConfig config, robotio::sim::World world)
+    : config_(std::move(config)), world_(std::move(world)) {}
+
+MissionRuntime::~MissionRuntime() {
+  if (!threads_.empty() && !joined_) {
+    Stop();
+    Wait();
+  }
+}
+
+robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(MissionConfig config) {
+  auto world = robotio::sim::LoadWorld(config.world_file);
+  if (!world) return world.error();
+  auto rig = robotio::LoadRig(config.rig_file);
+  if (!rig) return rig.error();
+  auto robot = robotio::sim::LoadRobotConfig(config.robot_file);
+  if (!robot) return robot.error();
+  if (auto ok = mapping::ValidateMappingConfig(config.mapping, "mapping settings"); !ok) {
+    return ok.error();
+  }
+  std::error_code ec;
+  fs::create_directories(config.out_dir, ec);
+  if (ec) return robotio::Error{config.out_dir + ": cannot create the output folder"};
+
+  for (robotio::KinectMount& mount : rig->kinects) {
+    mount.intrinsics = mount.intrinsics.Scaled(config.kinect_width, config.kinect_height);
+  }
+  world->duration_s = config.max_time_s;  // What stands at the end is static ground truth.
+  std::unique_ptr<MissionRuntime> runtime(new MissionRuntime(config, *world));
+  runtime->rig_ = *rig;
+  runtime->footprint_radius_m_ = robot->footprint_radius_m;
+
+  mapping::MotionModelConfig motion;
+  motion.track_width_m = robot->track_width_m;
+  runtime->mediator_ = std::make_unique<Mediator>(config.speed, motion);
+  if (config.record) {
+    robotio::RecordingMeta meta;
+    meta.world = config.world_file;
+    meta.seed = config.seed;
+    meta.duration_s = config.max_time_s;
+    auto writer = robotio::RecordingWriter::Create(config.out_dir + "/recording", *rig, meta);
+    if (!writer) return writer.error();
+    runtime->recording_ = std::move(*writer);
+  }
+  robotio::sim::SimulatorConfig sim_config;
+  sim_config.seed = config.seed;
+  auto simulator = std::make_unique<robotio::sim::Simulator>(*world, *robot, *rig, sim_config);
+
+  SimulationDriverConfig driver;
+  driver.max_time_s = config.max_time_s;
+  driver.control_period_s = 1.0 / config.control_rate_hz;
+  driver.replan_period_s = config.planning.replan_period_s;
+  runtime->driver_ = std::make_unique<SimulationDriver>(std::move(simulator), *runtime->mediator_,
+                                                        driver, runtime->recording_.get());
+
+  MappingWorkerConfig mapping;
+  mapping.poses = config.poses;
+  mapping.mapping = config.mapping;
+  mapping.slam = config.slam;
+  mapping.projection = config.planning.projection;
+  mapping.area = AreaFor(*world, config.mapping.resolution_m);
+  mapping.save_file = config.out_dir + "/map.ot";
+  mapping.save_period_s = config.save_period_s;
+  mapping.inspection_distance_m = config.planning.coverage.inspection_distance_m;
+  runtime->mapping_ = std::make_unique<MappingWorker>(*runtime->mediator_, *rig, mapping);
+
+  PlanningWorkerConfig planning;
+  planning.planning = config.planning;
+  planning.known_floor_radius_m = config.known_floor_radius_m;
+  planning.resolution_m = config.mapping.resolution_m;
+  runtime->planning_ = std::make_unique<PlanningWorker>(*runtime->mediator_, planning);
+
+  ControlWorkerConfig control;
+  control.rate_hz = config.control_rate_hz;
+  control.follower = config.planning.follower;
+  control.guard = config.planning.guard;
+  control.cost = config.planning.cost;
+  runtime->control_ = std::make_unique<ControlWorker>(*runtime->mediator_, *rig, control);
+  return runtime;
+}
+
+void MissionRuntime::Start() {
+  if (!mediator_->control.Start()) return;
+  threads_.emplace_back([this] {
+    driver_->Run();
+    mediator_->WakeAll();  // Time limit or stop: everyone leaves.
+  });
+  threads_.emplace_back([this] { mapping_->Run(); });
+  threads_.emplace_back([this] { planning_->Run(); });
+  threads_.emplace_back([this] { control_->Run(); });
+  threads_.emplace_back([this] { Monitor(); });
+}
+
+void MissionRuntime::Monitor() {
+  while (!mediator_->control.stopping()) {
+    if (mediator_->counters.returned_to_start.load()) {
+      spdlog::info("exploration complete: back at the start");
+      mediator_->WakeAll();
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+bool MissionRuntime::Pause() { return mediator_->control.Pause(); }
+bool MissionRuntime::Resume() { return mediator_->control.Resume(); }
+void MissionRuntime::Stop() { mediator_->WakeAll(); }
+
+void MissionRuntime::Wait() {
+  for (std::thread& t : threads_) {
+    if (t.joinable()) t.join();
+  }
+  joined_ = true;
+  mediator_->control.MarkFinished();
+}
+
+bool MissionRuntime::finished() const {
+  return mediator_->control.state() == MissionState::kFinished;
+}
+
+MissionSnapshot MissionRuntime::Snapshot() const {
+  MissionSnapshot s;
+  const Mediator& m = *mediator_;
+  s.state = m.control.state();
+  s.sim_time_s = robotio::NanosToSeconds(m.clock.now_ns());
+  s.pose = m.CurrentPose();
+  s.trail = m.Trail();
+  if (auto grid = m.grid.Get()) s.grid = grid->value;
+  if (auto plan = m.plan.Get()) {
+    s.target_kind = plan->value.kind;
+    s.has_goal = plan->value.has_goal;
+    s.goal = plan->value.goal_map;
+    s.path = plan->value.path_map;
+    s.candidates = plan->value.frontier_targets_map;
+  }
+  for (const auto& slot : m.latest_depth) {
+    if (auto frame = slot.Get()) s.depth.push_back(frame->value);
+  }
+  s.distance_m = m.odometry.distance_m();
+  s.frames_delivered = m.frames.delivered();
+  s.frames_dropped = m.frames.dropped();
+  s.frames_processed = m.counters.frames_processed.load();
+  s.collisions = m.counters.collisions.load();
+  s.guard_stops = m.counters.guard_stops.load();
+  if (auto command = m.command.Get()) s.command = command->value;
+  s.exploration_done = m.counters.exploration_done.load();
+  return s;
+}
+
+robotio::Expected<MissionReport> MissionRuntime::Finish() {
+  if (!joined_) Wait();
+  const Mediator& m = *mediator_;
+  const std::string& out = config_.out_dir;
+  MissionReport r;
+  r.completed = m.counters.returned_to_start.load();
+  r.mission_time_s = robotio::NanosToSeconds(m.clock.now_ns());
+  r.collisions = m.counters.collisions.load();
+  r.frames_delivered = m.frames.delivered();
+  r.frames_dropped = m.frames.dropped();
+  r.frames_processed = m.counters.frames_processed.load();
+  r.registrations_accepted = m.counters.registrations_accepted.load();
+  r.registrations_rejected = m.counters.registrations_rejected.load();
+  r.guard_stops = m.counters.guard_stops.load();
+  r.plans = m.counters.plans.load();
+  r.plan_median_ms = Percentile(planning_->plan_ms(), 0.5);
+  r.plan_p95_ms = Percentile(planning_->plan_ms(), 0.95);
+  r.insert_median_ms = mapping_->median_insert_ms();
+  r.insert_p95_ms = mapping_->p95_insert_ms();
+
+  const robotio::Trajectory truth = m.GroundTruth();
+  const robotio::Trajectory estimate = m.Estimates();
+  for (std::size_t i = 1; i < truth.size(); ++i) {
+    r.path_length_m += (truth[i].pose.translation() - truth[i - 1].pose.translation()).norm();
+  }
+  mapping::TrajectoryEvaluationConfig ate;
+  ate.max_stamp_difference_s = 0.011;  // Ground truth comes at the gyro's 100 Hz.
+  if (auto e = mapping::EvaluateTrajectory(truth, estimate, ate)) r.ate_rmse_m = e->ate_m.rmse;
+  if (auto e = mapping::EvaluateTrajectory(truth, m.OdometryEstimates(), ate)) {
+    r.odometry_ate_rmse_m = e->ate_m.rmse;
+  }
+  const mapping::PointAccuracy accuracy = mapping_->Accuracy();
+  r.static_accuracy = accuracy.static_accuracy;
+  r.dynamic_accuracy = accuracy.dynamic_accuracy;
+  r.associated_accuracy = accuracy.associated_accuracy;
+
+  const TruthGrid truth_grid =
+      BuildTruthGrid(world_, mapping_->grid(), footprint_radius_m_,
+                     config_.planning.projection.robot_height_m, r.mission_time_s);
+  r.explored_free_fraction = ExploredFreeFraction(truth_grid, mapping_->grid());
+  const robotio::PointList samples =
+      robotio::sim::SampleStaticSurfaces(world_, config_.mapping.resolution_m);
+  r.surface_coverage = SurfaceCoverage(
+      truth_grid, samples, config_.planning.projection.robot_height_m,
+      config_.planning.coverage.inspection_distance_m,
+      [this](const Eigen::Vector3f& p) { return mapping_->Inspected(p); });
+
+  const auto write = [&](const std::string& name, robotio::Status status) -> robotio::Status {
+    if (!status) return status;
+    r.files.push_back(name);
+    return robotio::Ok{};
+  };
+  const mapping::DualOcTree& tree = mapping_->map().tree();
+  std::vector<robotio::Status> results = {
+      write("map.ot", mapping::SaveDualMap(tree, out + "/map.ot")),
+      write("static.bt", mapping::ExportBinary(tree, mapping::MapChannel::kStatic, out + "/static.bt")),
+      write("dynamic.bt",
+            mapping::ExportBinary(tree, mapping::MapChannel::kDynamic, out + "/dynamic.bt")),
+      write("map3d_topdown.png", mapping::WriteTopDownPng(tree, out + "/map3d_topdown.png")),
+      write("trajectory.tum", robotio::WriteTumTrajectory(estimate, out + "/trajectory.tum")),
+      write("groundtruth.tum", robotio::WriteTumTrajectory(truth, out + "/groundtruth.tum")),
+      write("map2d.png", WriteMapPicture(mapping_->grid(), ToPoses(estimate), ToPoses(truth),
+                                         Snapshot().candidates, out + "/map2d.png")),
+      write("map2d.pgm", WriteRosMap(mapping_->grid(), out + "/map2d.pgm", out + "/map2d.yaml")),
+  };
+  if (r.files.back() == "map2d.pgm") r.files.push_back("map2d.yaml");
+  if (recording_) r.files.push_back("recording");
+  for (const auto& status : results) {
+    if (!status) return status.error();
+  }
+  r.files.push_back("report.json");
+  char extra[512];
+  std::snprintf(extra, sizeof(extra),
+                R"({"world": "%s", "seed": %llu, "poses": "%s", "speed": %g, "kinect_width": %d,
+                    "kinect_height": %d, "targets": "%s"})",
+                config_.world_file.c_str(), static_cast<unsigned long long>(config_.seed),
+                ToString(config_.poses), config_.speed, config_.kinect_width,
+                config_.kinect_height, config_.planning.targets.strategy.c_str());
+  if (auto status = WriteReportJson(r, extra, out + "/report.json"); !status) {
+    return status.error();
+  }
+  return r;
+}
+
+}  // namespace dynamap::app::runtime

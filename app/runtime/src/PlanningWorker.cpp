@@ -1,0 +1,144 @@
+#include "dynamap/app/runtime/PlanningWorker.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "dynamap/planning/CostField.hpp"
+#include "dynamap/planning/PathShortening.hpp"
+#include "dynamap/robotio/Time.hpp"
+
+namespace dynamap::app::runtime {
+
+namespace {
+
+// Marks the cells within `radius_m` of `p` navigable where nothing was seen (the robot
+// stood there, or the floor is too close for the Kinects to see).
+void ClearAround(planning::GridMap& grid, const robotio::Pose2D& p, double radius_m) {
+  const int r = static_cast<int>(std::ceil(radius_m / grid.resolution_m));
+  const planning::GridIndex c = grid.CellAt(p.x, p.y);
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      const planning::GridIndex n{c.x + dx, c.y + dy};
+      if (!grid.Contains(n) || (dx * dx + dy * dy) * grid.resolution_m * grid.resolution_m >
+                                   radius_m * radius_m) {
+        continue;
+      }
+      if (grid.At(n) == planning::CellState::kUnknown) grid.Set(n, planning::CellState::kNavigable);
+    }
+  }
+}
+
+}  // namespace
+
+PlanningWorker::PlanningWorker(Mediator& mediator, PlanningWorkerConfig config)
+    : mediator_(mediator),
+      config_(std::move(config)),
+      targets_(config_.planning.targets, config_.resolution_m),
+      coverage_(config_.planning.coverage),
+      obstacles_(config_.planning.temporary_obstacle_s) {}
+
+planning::GridMap PlanningWorker::PrepareGrid(const planning::GridMap& seen,
+                                              const robotio::Pose2D& pose) const {
+  planning::GridMap grid = seen;
+  for (const robotio::Pose2D& p : mediator_.Trail()) {
+    ClearAround(grid, p, config_.known_floor_radius_m);
+  }
+  ClearAround(grid, pose, config_.known_floor_radius_m);
+  return grid;
+}
+
+void PlanningWorker::PlanOnce(double now_s) {
+  // Nothing is judged before the first look around: one narrow view is not a map.
+  if (!mediator_.counters.looked_around.load()) return;
+  const auto projected = mediator_.grid.Get();
+  if (!projected || !projected->value) return;
+  const auto start = std::chrono::steady_clock::now();
+  const robotio::Pose2D pose = mediator_.CurrentPose();
+  // Frontiers come from what the sensors saw; the floor assumed around visited places only
+  // makes the robot's surroundings drivable (else it would chase its own blind ring).
+  obstacles_.Add(mediator_.TakeObstacles(), robotio::Pose2D{}, now_s);
+  obstacles_.Expire(now_s);
+  const planning::GridMap seen = obstacles_.Apply(*projected->value, now_s);
+  const planning::GridMap grid = PrepareGrid(seen, pose);
+  planning::TraversalGrid traversal = BuildTraversalGrid(grid, config_.planning.cost);
+  const planning::GridIndex robot = grid.CellAt(pose.x, pose.y);
+  const planning::GridIndex home = grid.CellAt(0.0, 0.0);
+  if (!grid.Contains(robot)) return;
+  // The robot stands where it stands: its own cell never blocks its way out.
+  if (traversal.Blocked(robot)) traversal.penalty[traversal.Index(robot)] = 10.0;
+  coverage_.Observe(grid, pose);
+
+  const planning::TargetDecision decision =
+      targets_.Plan(seen, traversal, robot, home, &coverage_, now_s);
+  Plan plan;
+  plan.stamp_ns = robotio::SecondsToNanos(now_s);
+  plan.kind = decision.kind;
+  for (const auto& candidate : decision.candidates) {
+    plan.frontier_targets_map.emplace_back(grid.CenterX(candidate.viewpoint.x),
+                                           grid.CenterY(candidate.viewpoint.y));
+  }
+  if (decision.kind == planning::TargetKind::kDone) {
+    mediator_.counters.exploration_done = true;
+    mediator_.counters.returned_to_start = true;
+    mediator_.plan.Set(plan);
+    return;
+  }
+  if (decision.kind == planning::TargetKind::kReturnToStart) {
+    mediator_.counters.exploration_done = true;
+  }
+  if (!search_) {
+    search_ = std::make_unique<planning::PathPlanner>(config_.planning.planner, traversal);
+  } else {
+    search_->SetGrid(traversal);  // D* Lite repairs only what changed.
+  }
+  search_->MoveStart(robot);
+  if (decision.cell != goal_) {
+    goal_ = decision.cell;
+    goal_target_ = decision.chosen;
+    goal_since_s_ = now_s;
+    search_->SetGoal(goal_);
+  }
+  const planning::GridPath path = search_->Plan();
+  if (!path.found) {
+    targets_.ReportUnreachable(goal_target_, now_s);
+    ++mediator_.counters.unreachable_targets;
+    goal_ = {-1, -1};
+  } else if (now_s - goal_since_s_ > config_.target_timeout_s) {
+    targets_.ReportFailure(goal_target_, now_s);
+    goal_since_s_ = now_s;
+  }
+  if (path.found) {
+    plan.has_goal = true;
+    plan.goal_map = {grid.CenterX(goal_.x), grid.CenterY(goal_.y)};
+    for (const planning::GridIndex& c : planning::ShortenPath(search_->grid(), path.cells)) {
+      plan.path_map.emplace_back(grid.CenterX(c.x), grid.CenterY(c.y));
+    }
+  }
+  plan.map = std::make_shared<const planning::GridMap>(grid);
+  plan.traversal = std::make_shared<const planning::TraversalGrid>(std::move(traversal));
+  planning::CostFieldConfig known_only = config_.planning.cost;
+  known_only.unknown_is_obstacle = false;
+  plan.clearance =
+      std::make_shared<const planning::TraversalGrid>(BuildTraversalGrid(grid, known_only));
+  plan.plan_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  plan_ms_.push_back(plan.plan_ms);
+  ++mediator_.counters.plans;
+  mediator_.plan.Set(std::move(plan));
+}
+
+void PlanningWorker::Run() {
+  const auto period_ns = robotio::SecondsToNanos(config_.planning.replan_period_s);
+  std::int64_t next_ns = 0;
+  while (mediator_.control.WaitWhilePaused()) {
+    if (!mediator_.clock.WaitUntil(next_ns, mediator_.control)) break;
+    const std::int64_t now_ns = mediator_.clock.now_ns();
+    PlanOnce(robotio::NanosToSeconds(now_ns));
+    mediator_.counters.planning_done_ns = now_ns;
+    next_ns = now_ns + period_ns;
+  }
+}
+
+}  // namespace dynamap::app::runtime
