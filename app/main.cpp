@@ -1,4 +1,5 @@
 // dynamap: calibrate a Kinect rig, explore autonomously, inspect and export maps.
+#include <spdlog/cfg/env.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -8,6 +9,7 @@
 #include "dynamap/app/Version.hpp"
 
 int main(int argc, char** argv) {
+  spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows the workers' decisions.
   CLI::App app{"dynamap " DYNAMAP_VERSION_STRING
                ": autonomous 3D mapping of dynamic indoor scenes (Kinect rig calibration, "
                "exploration with a static and a dynamic OctoMap, map inspection and export)"};

@@ -12,7 +12,6 @@ CellState ProjectColumn(const VoxelMapView& view, double x_m, double y_m,
   const int k_min = static_cast<int>(std::floor(-(config.floor_band_m + config.hole_depth_m) / r));
   const int k_max = static_cast<int>(std::floor(config.robot_height_m / r));
   bool floor_seen = false;
-  bool floor_band_free = false;
   bool free_below_floor = false;
   for (int k = k_min; k <= k_max; ++k) {
     const double z = (k + 0.5) * r;
@@ -32,7 +31,8 @@ CellState ProjectColumn(const VoxelMapView& view, double x_m, double y_m,
       if (s == VoxelState::kOccupied || view.DynamicState(p) == VoxelState::kOccupied) {
         floor_seen = true;
       }
-      if (s == VoxelState::kFree) floor_band_free = true;
+      // Free floor-band voxels are no hole evidence: rays traced to the centres of floor
+      // voxels graze through the band just before real floor (both layers around z = 0).
     } else if (z < -config.floor_band_m) {
       if (s == VoxelState::kFree) free_below_floor = true;
       // Floor slightly below the band (a ramp) still counts as floor when it is occupied.
@@ -41,7 +41,7 @@ CellState ProjectColumn(const VoxelMapView& view, double x_m, double y_m,
     }
   }
   if (floor_seen) return CellState::kNavigable;
-  if (free_below_floor || floor_band_free) return CellState::kHole;
+  if (free_below_floor) return CellState::kHole;
   return CellState::kUnknown;
 }
 

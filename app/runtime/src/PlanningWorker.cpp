@@ -56,8 +56,8 @@ void PlanningWorker::PlanOnce(double now_s) {
   if (!projected || !projected->value) return;
   const auto start = std::chrono::steady_clock::now();
   const robotio::Pose2D pose = mediator_.CurrentPose();
-  // Frontiers come from what the sensors saw; the floor assumed around visited places only
-  // makes the robot's surroundings drivable (else it would chase its own blind ring).
+  // The floor assumed around visited places (too close for the Kinects to see) counts as
+  // known, so frontiers lie beyond it and never at the robot's own feet.
   obstacles_.Add(mediator_.TakeObstacles(), robotio::Pose2D{}, now_s);
   obstacles_.Expire(now_s);
   const planning::GridMap seen = obstacles_.Apply(*projected->value, now_s);
@@ -71,7 +71,11 @@ void PlanningWorker::PlanOnce(double now_s) {
   coverage_.Observe(grid, pose);
 
   const planning::TargetDecision decision =
-      targets_.Plan(seen, traversal, robot, home, &coverage_, now_s);
+      targets_.Plan(grid, traversal, robot, home, &coverage_, now_s);
+  spdlog::debug("t {:.1f} s: {} regions, {} unreachable, {} candidates -> {} ({}, {})", now_s,
+                decision.frontier_regions, decision.unreachable_regions,
+                decision.candidates.size(), planning::TargetKindName(decision.kind),
+                decision.cell.x, decision.cell.y);
   Plan plan;
   plan.stamp_ns = robotio::SecondsToNanos(now_s);
   plan.kind = decision.kind;
@@ -88,15 +92,39 @@ void PlanningWorker::PlanOnce(double now_s) {
   if (decision.kind == planning::TargetKind::kReturnToStart) {
     mediator_.counters.exploration_done = true;
   }
+  // A viewpoint at the robot's feet resolves nothing it has not already seen from here:
+  // take the best-scored candidate further away instead, and count the near one as failed.
+  const double near_m = 2.0 * config_.planning.follower.goal_tolerance_m + grid.resolution_m;
+  const auto distance_to = [&](planning::GridIndex c) {
+    return std::hypot(grid.CenterX(c.x) - pose.x, grid.CenterY(c.y) - pose.y);
+  };
+  planning::GridIndex goal_cell = decision.cell;
+  planning::TargetCandidate chosen = decision.chosen;
+  if (decision.kind != planning::TargetKind::kReturnToStart &&
+      distance_to(decision.cell) <= near_m) {
+    targets_.ReportFailure(decision.chosen, now_s);
+    const planning::TargetCandidate* best = nullptr;
+    for (const auto& candidate : decision.candidates) {
+      if (distance_to(candidate.viewpoint) > near_m && std::isfinite(candidate.score) &&
+          (best == nullptr || candidate.score > best->score)) {
+        best = &candidate;
+      }
+    }
+    if (best != nullptr) {
+      goal_cell = best->viewpoint;
+      chosen = *best;
+      plan.kind = best->kind;
+    }
+  }
   if (!search_) {
     search_ = std::make_unique<planning::PathPlanner>(config_.planning.planner, traversal);
   } else {
     search_->SetGrid(traversal);  // D* Lite repairs only what changed.
   }
   search_->MoveStart(robot);
-  if (decision.cell != goal_) {
-    goal_ = decision.cell;
-    goal_target_ = decision.chosen;
+  if (goal_cell != goal_) {
+    goal_ = goal_cell;
+    goal_target_ = chosen;
     goal_since_s_ = now_s;
     search_->SetGoal(goal_);
   }

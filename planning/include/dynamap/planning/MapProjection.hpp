@@ -31,7 +31,7 @@ struct ProjectionConfig {
 
 // State of the column whose centre is (x_m, y_m) in the map frame. Voxels are sampled at
 // the view's resolution: occupied above step height and up to the robot's height (static
-// or dynamic) → obstacle; else no floor and free space seen below or in the floor band →
+// or dynamic) → obstacle; else no floor and free space seen below the floor band →
 // hole; else floor seen → navigable; else unknown.
 [[nodiscard]] CellState ProjectColumn(const VoxelMapView& view, double x_m, double y_m,
                                       const ProjectionConfig& config);
