@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "Percentile.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,17 +13,6 @@
 #include "dynamap/robotio/DepthProjection.hpp"
 
 namespace dynamap::app::runtime {
-
-namespace {
-
-double Percentile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-  return values[k];
-}
-
-}  // namespace
 
 MappingWorker::MappingWorker(Mediator& mediator, robotio::Rig rig, MappingWorkerConfig config)
     : mediator_(mediator),

@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "Percentile.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -49,13 +51,6 @@ planning::GridMap AreaFor(const robotio::sim::World& world, double resolution_m)
   area.origin_x_m = min_x - kMarginM;
   area.origin_y_m = min_y - kMarginM;
   return area;
-}
-
-double Percentile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-  return values[k];
 }
 
 std::vector<robotio::Pose2D> ToPoses(const robotio::Trajectory& trajectory) {
