@@ -6,7 +6,11 @@
 #include <cstdio>
 
 #include "cli/Commands.hpp"
+#include "cli/GuiCommand.hpp"
 #include "dynamap/app/Version.hpp"
+#ifdef DYNAMAP_WITH_GUI
+#include "dynamap/app/gui/GuiLauncher.hpp"
+#endif
 
 int main(int argc, char** argv) {
   spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows the workers' decisions.
@@ -16,12 +20,28 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "dynamap " DYNAMAP_VERSION_STRING);
   app.require_subcommand(0, 1);
   dynamap::app::RegisterCommands(app);
+  const dynamap::app::GuiLauncher launch_gui =
+      [&argc, argv](const dynamap::app::GuiCommandOptions& options) {
+#ifdef DYNAMAP_WITH_GUI
+        return dynamap::app::gui::RunGui(argc, argv, {options.map_file});
+#else
+        (void)options;
+        (void)argv;
+        std::fprintf(stderr, "dynamap gui: error: this build has no desktop application "
+                             "(configured with DYNAMAP_BUILD_GUI=OFF)\n");
+        return 2;
+#endif
+      };
+  dynamap::app::RegisterGuiCommand(app, launch_gui);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
   if (app.get_subcommands().empty()) {
+#ifdef DYNAMAP_WITH_GUI
+    if (dynamap::app::gui::DisplayAvailable()) return launch_gui({});
+#endif
     std::printf("%s", app.help().c_str());
     return 0;
   }

@@ -1,0 +1,20 @@
+// Entry point of the desktop application for `dynamap gui` and for `dynamap` with no
+// subcommand: sets up Qt and VTK's OpenGL format, shows the main window, runs the loop.
+#pragma once
+
+#include <string>
+
+namespace dynamap::app::gui {
+
+struct GuiOptions {
+  std::string map_file;  // opened in the Maps workspace at start when not empty.
+};
+
+// True when an X11 or Wayland display is there to open a window on.
+[[nodiscard]] bool DisplayAvailable();
+
+// Runs the application until its window closes; returns the process exit code. Never
+// throws: errors are printed to stderr and give exit code 1.
+[[nodiscard]] int RunGui(int& argc, char** argv, const GuiOptions& options);
+
+}  // namespace dynamap::app::gui

@@ -1,0 +1,114 @@
+// The main window: which workspaces it offers, shortcuts, menu toggles reaching the Maps
+// workspace, the status bar, recent files and layout kept in QSettings.
+#include <QAction>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <memory>
+
+#include "GuiTestSupport.hpp"
+#include "dynamap/app/gui/MainWindow.hpp"
+#include "dynamap/app/gui/MapControls.hpp"
+#include "dynamap/app/gui/MapsWorkspace.hpp"
+#include "dynamap/app/gui/RecentFiles.hpp"
+#include "dynamap/app/gui/StatusPanel.hpp"
+
+namespace dynamap::app::gui::test {
+
+class MainWindowTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void init() { QSettings().clear(); }
+
+  void OffersOnlyWorkingWorkspaces() {
+    MainWindow window;
+    QCOMPARE(window.WorkspaceNames(), QStringList{QStringLiteral("Maps")});
+    QCOMPARE(window.CurrentWorkspace(), 0);
+  }
+
+  void ActionsHaveShortcuts() {
+    MainWindow window;
+    QCOMPARE(window.FindAction(QStringLiteral("open_map"))->shortcut(),
+             QKeySequence(QKeySequence::Open));
+    QCOMPARE(window.FindAction(QStringLiteral("quit"))->shortcut(),
+             QKeySequence(QKeySequence::Quit));
+    QCOMPARE(window.FindAction(QStringLiteral("show_static"))->shortcut(),
+             QKeySequence(Qt::Key_F5));
+    QCOMPARE(window.FindAction(QStringLiteral("workspace_0"))->shortcut(),
+             QKeySequence(Qt::CTRL | Qt::Key_1));
+  }
+
+  void ExportsDisabledUntilAMapIsOpen() {
+    MainWindow window;
+    QVERIFY(!window.FindAction(QStringLiteral("export_0"))->isEnabled());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.OpenMap(Geb079Path());
+    QTRY_VERIFY_WITH_TIMEOUT(window.Maps()->Map() != nullptr, 60000);
+    QTRY_VERIFY(window.FindAction(QStringLiteral("export_0"))->isEnabled());
+  }
+
+  void StaticToggleActionReachesWorkspace() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QAction* show_static = window.FindAction(QStringLiteral("show_static"));
+    QVERIFY(show_static->isChecked());
+    show_static->trigger();
+    QVERIFY(!window.Maps()->Controls()->Filter().show_static);
+    window.Maps()->Controls()->SetShowStatic(true);
+    QVERIFY(show_static->isChecked());
+  }
+
+  void StatusBarShowsNoRobotWithoutMission() {
+    MainWindow window;
+    QVERIFY(window.Status()->ConnectionLabel().contains(QStringLiteral("not connected")));
+    window.Status()->SetConnection(RobotConnection::kSimulator);
+    window.Status()->SetDroppedFrames(12);
+    QVERIFY(window.Status()->ConnectionLabel().contains(QStringLiteral("simulator")));
+    QVERIFY(window.Status()->DroppedLabel().contains(QStringLiteral("12")));
+  }
+
+  void OpenedMapBecomesRecentAndPersists() {
+    {
+      MainWindow window;
+      window.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&window));
+      window.OpenMap(Geb079Path());
+      QTRY_VERIFY_WITH_TIMEOUT(window.Maps()->Map() != nullptr, 60000);
+      QCOMPARE(window.Recent().Files().value(0), QDir::cleanPath(QFileInfo(Geb079Path()).absoluteFilePath()));
+      window.close();
+    }
+    MainWindow reopened;
+    QCOMPARE(reopened.Recent().Files().value(0), QDir::cleanPath(QFileInfo(Geb079Path()).absoluteFilePath()));
+  }
+
+  void FailedOpenIsNotRecent() {
+    MainWindow window;
+    window.OpenMap(QStringLiteral("/nonexistent/map.ot"));
+    QVERIFY(window.Maps()->LastError().contains(QStringLiteral("/nonexistent/map.ot")));
+    QVERIFY(window.Recent().Files().isEmpty());
+  }
+
+  void RecentFilesDeduplicateAndCap() {
+    RecentFiles recent(3);
+    for (const char* name : {"/a.ot", "/b.ot", "/c.ot", "/a.ot", "/d.ot"}) {
+      recent.Add(QString::fromLatin1(name));
+    }
+    QCOMPARE(recent.Files(), (QStringList{QStringLiteral("/d.ot"), QStringLiteral("/a.ot"),
+                                          QStringLiteral("/c.ot")}));
+    QSettings settings;
+    recent.Save(settings);
+    RecentFiles loaded(3);
+    loaded.Load(settings);
+    QCOMPARE(loaded.Files(), recent.Files());
+  }
+};
+
+std::unique_ptr<QObject> MakeMainWindowTest() { return std::make_unique<MainWindowTest>(); }
+
+}  // namespace dynamap::app::gui::test
+
+#include "MainWindowTest.moc"
