@@ -1,6 +1,7 @@
 #include "dynamap/app/runtime/MissionEvaluation.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <deque>
 
 #include "dynamap/robotio/sim/CollisionWorld.hpp"
@@ -15,6 +16,8 @@ TruthGrid BuildTruthGrid(const robotio::sim::World& world, planning::GridMap are
   const robotio::sim::CollisionWorld collisions(world, robot_height_m);
   TruthGrid truth{std::move(area)};
   planning::GridMap& grid = truth.reachable;
+  // Only the extent of `area` is used: whatever states it holds are not truth.
+  std::fill(grid.cells.begin(), grid.cells.end(), CellState::kUnknown);
   std::vector<std::uint8_t> standable(grid.cells.size(), 0);
   for (int y = 0; y < grid.height; ++y) {
     for (int x = 0; x < grid.width; ++x) {

@@ -1,0 +1,79 @@
+#include <gtest/gtest.h>
+
+#include "dynamap/app/runtime/MissionEvaluation.hpp"
+#include "dynamap/robotio/sim/WorldLoader.hpp"
+
+namespace dynamap::app::runtime {
+namespace {
+
+using planning::CellState;
+
+// Two 3 x 2 m rooms joined by a 1 m doorway; the robot starts in the west room.
+constexpr const char* kTwoRooms = R"(
+name: two_rooms
+floor: {min: [0, 0], max: [6, 2]}
+robot_start: {x: 1.0, y: 1.0, yaw_deg: 0}
+walls:
+  - {id: south, from: [0, 0], to: [6, 0], thickness: 0.1, height: 2.5}
+  - {id: north, from: [6, 2], to: [0, 2], thickness: 0.1, height: 2.5}
+  - {id: west, from: [0, 2], to: [0, 0], thickness: 0.1, height: 2.5}
+  - {id: east, from: [6, 0], to: [6, 2], thickness: 0.1, height: 2.5}
+  - {id: split_low, from: [3, 0], to: [3, 0.5], thickness: 0.1, height: 2.5}
+  - {id: split_high, from: [3, 1.5], to: [3, 2], thickness: 0.1, height: 2.5}
+)";
+
+planning::GridMap Area(double resolution) {
+  // Map frame = robot start: the world spans x in [-1, 5], y in [-1, 1].
+  planning::GridMap area(160, 80, resolution);
+  area.origin_x_m = -2.0;
+  area.origin_y_m = -2.0;
+  return area;
+}
+
+int Count(const planning::GridMap& map, CellState state) {
+  int n = 0;
+  for (const CellState s : map.cells) n += s == state ? 1 : 0;
+  return n;
+}
+
+TEST(TruthGrid, ReachableFloorIsTheFloorShrunkByTheFootprintThroughTheDoorway) {
+  auto world = robotio::sim::ParseWorld(kTwoRooms, "two_rooms.yaml");
+  ASSERT_TRUE(world) << world.error().message;
+  const TruthGrid truth = BuildTruthGrid(*world, Area(0.05), 0.3, 1.0, 0.0);
+  // Each room shrinks by the footprint (0.3 m) plus half a wall (0.05 m) on every side:
+  // 2 x (2.3 x 1.3) m² plus the doorway between them, in 0.05 m cells.
+  const double area_m2 = Count(truth.reachable, CellState::kNavigable) * 0.05 * 0.05;
+  EXPECT_NEAR(area_m2, 2 * 2.3 * 1.3 + 0.7 * 0.4, 0.4);
+  // The east room is reached through the doorway.
+  const planning::GridIndex east_room = truth.reachable.CellAt(3.5, 0.0);
+  EXPECT_EQ(truth.reachable.At(east_room), CellState::kNavigable);
+}
+
+TEST(TruthGrid, IgnoresTheStatesOfTheGridItIsGivenAsExtent) {
+  auto world = robotio::sim::ParseWorld(kTwoRooms, "two_rooms.yaml");
+  ASSERT_TRUE(world) << world.error().message;
+  planning::GridMap known = Area(0.05);
+  std::fill(known.cells.begin(), known.cells.end(), CellState::kNavigable);
+  const TruthGrid from_known = BuildTruthGrid(*world, known, 0.3, 1.0, 0.0);
+  const TruthGrid from_empty = BuildTruthGrid(*world, Area(0.05), 0.3, 1.0, 0.0);
+  EXPECT_EQ(from_known.reachable.cells, from_empty.reachable.cells);
+}
+
+TEST(ExploredFreeFraction, CountsKnownNavigableCellsOfTheReachableFloor) {
+  auto world = robotio::sim::ParseWorld(kTwoRooms, "two_rooms.yaml");
+  ASSERT_TRUE(world) << world.error().message;
+  const TruthGrid truth = BuildTruthGrid(*world, Area(0.05), 0.3, 1.0, 0.0);
+  EXPECT_DOUBLE_EQ(ExploredFreeFraction(truth, Area(0.05)), 0.0);
+  EXPECT_DOUBLE_EQ(ExploredFreeFraction(truth, truth.reachable), 1.0);
+  // Knowing only the west room (map x < 2) is about half.
+  planning::GridMap west = truth.reachable;
+  for (int y = 0; y < west.height; ++y) {
+    for (int x = 0; x < west.width; ++x) {
+      if (west.CenterX(x) > 2.0) west.Set({x, y}, CellState::kUnknown);
+    }
+  }
+  EXPECT_NEAR(ExploredFreeFraction(truth, west), 0.5, 0.06);
+}
+
+}  // namespace
+}  // namespace dynamap::app::runtime
