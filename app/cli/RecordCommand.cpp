@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "cli/CommandSupport.hpp"
+#include "cli/DeviceRecording.hpp"
 #include "cli/ProgressLine.hpp"
 #include "dynamap/robotio/RecordingWriter.hpp"
 #include "dynamap/robotio/Time.hpp"
@@ -34,6 +35,8 @@ struct RecordOptions {
   double duration_s = 0.0;  // 0: the world's duration_s.
   std::uint64_t seed = 1;
   int width = 0;            // 0: the rig's resolution.
+  bool device = false;      // Record the real robot instead of the simulator.
+  DeviceRecordOptions device_options;
 };
 
 // Writes simulator output on its own thread so PNG encoding overlaps the rendering.
@@ -213,19 +216,44 @@ void RunRecord(const RecordOptions& options) {
 void RegisterRecordCommand(CLI::App& app) {
   auto options = std::make_shared<RecordOptions>();
   CLI::App* record = app.add_subcommand(
-      "record", "Simulate the robot in a world along its scripted path and write a recording "
-                "with ground truth (groundtruth.txt, labels/, the true rig)");
-  record->add_option("--world", options->world, "World or scenario file (YAML)")->required();
+      "record", "Write a recording: the simulator driven along a world's scripted path, with "
+                "ground truth (--world), or the real robot driven with the gamepad (--device)");
+  auto* world = record->add_option("--world", options->world, "World or scenario file (YAML)");
+  auto* device = record->add_flag(
+      "--device", options->device,
+      "Record the real robot (Segway RMP, Xsens gyro, Kinects) driven with the gamepad: hold LB "
+      "to drive, Start or Ctrl-C ends (docs/HARDWARE.md)");
+  world->excludes(device);
   record->add_option("--rig", options->rig, "Rig file (default resources/rigs/two_kinects.yaml)");
   record->add_option("--robot", options->robot,
-                     "Robot file (default resources/robots/segway_rmp50.yaml)");
-  record->add_option("--duration", options->duration_s, "Simulated seconds (default: the world's duration_s)")
+                     "Robot file (default resources/robots/segway_rmp50.yaml)")
+      ->excludes(device);
+  record->add_option("--duration", options->duration_s,
+                     "Seconds to record (default: the world's duration_s; with --device, until "
+                     "Start or Ctrl-C)")
       ->check(CLI::Range(0.01, 1e5));
-  record->add_option("--seed", options->seed, "Random seed (same seed, same recording)");
+  record->add_option("--seed", options->seed, "Random seed (same seed, same recording)")
+      ->excludes(device);
   record->add_option("--width", options->width, "Depth image width in px (height follows; default: the rig's)")
       ->check(CLI::Range(16, 4096));
   record->add_option("--out", options->out, "New recording folder")->required();
-  record->callback([options] { RunRecord(*options); });
+  AddDeviceRecordOptions(*record, device, options->device_options);
+  record->callback([options] {
+    if (options->device) {
+      DeviceRecordOptions device_options = options->device_options;
+      device_options.rig = options->rig;
+      device_options.out = options->out;
+      device_options.duration_s = options->duration_s;
+      device_options.width = options->width;
+      RunDeviceRecord(device_options);
+      return;
+    }
+    if (options->world.empty()) {
+      FailCommand("record", "say what to record: --world FILE (the simulator) or --device (the "
+                            "real robot)");
+    }
+    RunRecord(*options);
+  });
 }
 
 }  // namespace dynamap::app
