@@ -97,6 +97,11 @@ std::string EndText(hw::RecordingEnd end) {
   return "";
 }
 
+// `message` ending in a full stop, so a hint can follow it as a sentence.
+std::string Sentence(const std::string& message) {
+  return !message.empty() && message.back() == '.' ? message : message + ".";
+}
+
 robotio::Rig LoadRigFor(const DeviceRecordOptions& options) {
   auto rig =
       robotio::LoadRig(options.rig.empty() ? ResourcePath("rigs/two_kinects.yaml") : options.rig);
@@ -126,11 +131,15 @@ hw::RecordingDevices OpenDevices(const DeviceRecordOptions& options, const robot
   if (options.no_cameras) return std::move(devices).value();
 
   auto cameras = hw::CameraConfigsForRig(rig, options.cameras);
-  if (!cameras) FailCommand(kCommand, cameras.error().message + " (--camera, once per Kinect)");
+  if (!cameras) {
+    FailCommand(kCommand, Sentence(cameras.error().message) +
+                              " Give one --camera per Kinect, in rig order, or --no-cameras to "
+                              "record without depth.");
+  }
   auto opened = hw::OpenRecordingCameras(*cameras);
   if (!opened) {
-    FailCommand(kCommand,
-                opened.error().message + " To record without depth on purpose, pass --no-cameras.");
+    FailCommand(kCommand, Sentence(opened.error().message) +
+                              " To record without depth on purpose, pass --no-cameras.");
   }
   devices->cameras = std::move(opened).value();
   for (const auto& c : *cameras) devices->camera_names.push_back(c.name);
