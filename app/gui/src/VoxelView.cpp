@@ -1,10 +1,13 @@
 #include "dynamap/app/gui/VoxelView.hpp"
 
+#include <QApplication>
 #include <QMouseEvent>
 #include <QVTKInteractor.h>
 #include <vtkActor.h>
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
 #include <vtkCubeSource.h>
 #include <vtkFloatArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -18,6 +21,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextProperty.h>
@@ -25,6 +29,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 
 namespace dynamap::app::gui {
 
@@ -33,6 +38,18 @@ namespace {
 // A click is a pick, not a rotation, when the cursor moved at most this far (pixels).
 constexpr int kClickSlopPx = 4;
 constexpr std::array<double, 3> kDynamicRgb = {0.91, 0.16, 0.16};
+// Points drawn while dragging. Software OpenGL (llvmpipe) rasterises a wide point as two
+// triangles: 1 px points rotate an office map three times faster there (docs/BENCHMARKS.md).
+constexpr float kDragPointSizePx = 3.0f;
+constexpr float kSoftwareDragPointSizePx = 1.0f;
+
+bool IsSoftwareRenderer(vtkRenderWindow* window) {
+  const std::string capabilities = window->ReportCapabilities();
+  for (const char* name : {"llvmpipe", "softpipe", "Software Rasterizer", "SWR"}) {
+    if (capabilities.find(name) != std::string::npos) return true;
+  }
+  return false;
+}
 
 vtkSmartPointer<vtkLookupTable> MakeHeightLut() {
   // Viridis: readable in grey print and leaves red free for the dynamic layer.
@@ -87,6 +104,9 @@ vtkSmartPointer<vtkGlyph3DMapper> MakeCubeMapper() {
 
 VoxelView::VoxelView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
   auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  // No multisampling: it more than doubles the cost of a frame on software OpenGL, and
+  // axis-aligned cubes shaded per face show little aliasing.
+  window->SetMultiSamples(0);
   setRenderWindow(window);
   renderer_ = vtkSmartPointer<vtkRenderer>::New();
   renderer_->GradientBackgroundOn();
@@ -114,6 +134,23 @@ VoxelView::VoxelView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
   dynamic_actor_->GetProperty()->SetAmbient(0.3);
   renderer_->AddActor(static_actor_);
   renderer_->AddActor(dynamic_actor_);
+
+  static_points_mapper_ = vtkSmartPointer<vtkPolyDataMapper>::New();
+  dynamic_points_mapper_ = vtkSmartPointer<vtkPolyDataMapper>::New();
+  dynamic_points_mapper_->ScalarVisibilityOff();
+  static_points_actor_ = vtkSmartPointer<vtkActor>::New();
+  static_points_actor_->SetMapper(static_points_mapper_);
+  dynamic_points_actor_ = vtkSmartPointer<vtkActor>::New();
+  dynamic_points_actor_->SetMapper(dynamic_points_mapper_);
+  dynamic_points_actor_->GetProperty()->SetColor(kDynamicRgb[0], kDynamicRgb[1], kDynamicRgb[2]);
+  for (vtkActor* actor : {static_points_actor_.Get(), dynamic_points_actor_.Get()}) {
+    actor->GetProperty()->SetRepresentationToPoints();
+    actor->GetProperty()->SetPointSize(kDragPointSizePx);
+    actor->GetProperty()->LightingOff();
+    actor->VisibilityOff();
+    actor->PickableOff();
+    renderer_->AddActor(actor);
+  }
 
   auto highlight_source = vtkSmartPointer<vtkCubeSource>::New();
   auto highlight_mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
@@ -147,6 +184,9 @@ VoxelView::VoxelView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
 
   auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
   interactor()->SetInteractorStyle(style);
+  // The trackball style brackets every drag and wheel step with these two events.
+  style->AddObserver(vtkCommand::StartInteractionEvent, this, &VoxelView::OnStartInteraction);
+  style->AddObserver(vtkCommand::EndInteractionEvent, this, &VoxelView::OnEndInteraction);
   axes_widget_ = vtkSmartPointer<vtkOrientationMarkerWidget>::New();
   axes_widget_->SetOrientationMarker(vtkSmartPointer<vtkAxesActor>::New());
   axes_widget_->SetInteractor(interactor());
@@ -234,6 +274,35 @@ void VoxelView::RotateAndRender(double degrees) {
   renderWindow()->Render();
 }
 
+void VoxelView::SetInteracting(bool interacting) {
+  ShowPoints(interacting);
+  Render();
+}
+
+void VoxelView::ShowPoints(bool points) {
+  if (points && !renderer_checked_) {
+    renderer_checked_ = true;
+    if (IsSoftwareRenderer(renderWindow())) {
+      static_points_actor_->GetProperty()->SetPointSize(kSoftwareDragPointSizePx);
+      dynamic_points_actor_->GetProperty()->SetPointSize(kSoftwareDragPointSizePx);
+    }
+  }
+  interacting_ = points;
+  static_actor_->SetVisibility(!points);
+  dynamic_actor_->SetVisibility(!points);
+  static_points_actor_->SetVisibility(points);
+  dynamic_points_actor_->SetVisibility(points);
+}
+
+void VoxelView::OnStartInteraction() {
+  // A wheel step is a single frame; switching to points and back would cost two.
+  if (QApplication::mouseButtons() != Qt::NoButton) ShowPoints(true);
+}
+
+void VoxelView::OnEndInteraction() {
+  if (interacting_) SetInteracting(false);
+}
+
 std::size_t VoxelView::VisibleCount(VoxelLayer layer) const {
   return layer == VoxelLayer::kStatic ? visible_static_ : visible_dynamic_;
 }
@@ -294,15 +363,26 @@ void VoxelView::RebuildLayers() {
         values->SetValue(id, by_height ? voxel.centre.z() : voxel.static_probability);
       }
     }
+    // One vertex cell per voxel for the points drawn while dragging; the glyph mapper
+    // ignores cells.
+    auto verts = vtkSmartPointer<vtkCellArray>::New();
+    verts->AllocateExact(static_cast<vtkIdType>(count), static_cast<vtkIdType>(count));
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto id = static_cast<vtkIdType>(i);
+      verts->InsertNextCell(1, &id);
+    }
     auto poly = vtkSmartPointer<vtkPolyData>::New();
     poly->SetPoints(points);
+    poly->SetVerts(verts);
     poly->GetPointData()->AddArray(sizes);
     poly->GetPointData()->SetScalars(values);
     if (layer == VoxelLayer::kStatic) {
       static_mapper_->SetInputData(poly);
+      static_points_mapper_->SetInputData(poly);
       visible_static_ = count;
     } else {
       dynamic_mapper_->SetInputData(poly);
+      dynamic_points_mapper_->SetInputData(poly);
       visible_dynamic_ = count;
     }
   }
@@ -333,6 +413,10 @@ void VoxelView::ApplyColourMode() {
   static_mapper_->ScalarVisibilityOn();
   static_mapper_->SetScalarModeToUsePointData();
   static_mapper_->UseLookupTableScalarRangeOff();
+  static_points_mapper_->SetLookupTable(static_mapper_->GetLookupTable());
+  static_points_mapper_->SetScalarRange(static_mapper_->GetScalarRange());
+  static_points_mapper_->ScalarVisibilityOn();
+  static_points_mapper_->SetScalarModeToUsePointData();
   scalar_bar_->SetVisibility(set_ && !set_->voxels.empty());
 }
 

@@ -1,6 +1,8 @@
 // The 3D view of a voxel map: each layer (static, dynamic) is one polydata of voxel centres
 // drawn by a vtkGlyph3DMapper with a cube source (GPU instancing), never an actor per voxel.
-// Left click without dragging picks the voxel under the cursor.
+// While the operator drags, the same polydata is drawn as points (one vertex instead of 12
+// triangles per voxel; 1 px points on software OpenGL), so rotation stays interactive on
+// software OpenGL too. Left click without dragging picks the voxel under the cursor.
 #pragma once
 
 #include <QPoint>
@@ -17,6 +19,7 @@ class vtkActor;
 class vtkGlyph3DMapper;
 class vtkLookupTable;
 class vtkOrientationMarkerWidget;
+class vtkPolyDataMapper;
 class vtkRenderer;
 class vtkScalarBarActor;
 
@@ -47,6 +50,9 @@ class VoxelView : public QVTKOpenGLNativeWidget {
   // Rotates the camera about the view-up axis by `degrees` and renders one frame; used by
   // the rotation benchmark to time what an operator's drag does.
   void RotateAndRender(double degrees);
+  // Points while true (during a drag), cubes otherwise; renders.
+  void SetInteracting(bool interacting);
+  [[nodiscard]] bool Interacting() const { return interacting_; }
 
   [[nodiscard]] std::size_t VisibleCount(VoxelLayer layer) const;
   [[nodiscard]] const VoxelFilter& Filter() const { return filter_; }
@@ -63,6 +69,9 @@ class VoxelView : public QVTKOpenGLNativeWidget {
   void mouseReleaseEvent(QMouseEvent* event) override;
 
  private:
+  void ShowPoints(bool points);
+  void OnStartInteraction();
+  void OnEndInteraction();
   void RebuildLayers();
   void ApplyColourMode();
   void Render();
@@ -73,12 +82,18 @@ class VoxelView : public QVTKOpenGLNativeWidget {
   std::size_t visible_static_ = 0;
   std::size_t visible_dynamic_ = 0;
   QPoint press_position_;
+  bool interacting_ = false;
+  bool renderer_checked_ = false;  // point size chosen for the OpenGL implementation.
 
   vtkSmartPointer<vtkRenderer> renderer_;
   vtkSmartPointer<vtkGlyph3DMapper> static_mapper_;
   vtkSmartPointer<vtkGlyph3DMapper> dynamic_mapper_;
   vtkSmartPointer<vtkActor> static_actor_;
   vtkSmartPointer<vtkActor> dynamic_actor_;
+  vtkSmartPointer<vtkPolyDataMapper> static_points_mapper_;
+  vtkSmartPointer<vtkPolyDataMapper> dynamic_points_mapper_;
+  vtkSmartPointer<vtkActor> static_points_actor_;
+  vtkSmartPointer<vtkActor> dynamic_points_actor_;
   vtkSmartPointer<vtkActor> highlight_actor_;
   vtkSmartPointer<vtkLookupTable> height_lut_;
   vtkSmartPointer<vtkLookupTable> occupancy_lut_;
