@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
       {"VoxelSetTest", MakeVoxelSetTest},
       {"MapsWorkspaceTest", MakeMapsWorkspaceTest},
       {"MainWindowTest", MakeMainWindowTest},
+      {"MissionWorkspaceTest", MakeMissionWorkspaceTest},
+      {"CalibrationWorkspaceTest", MakeCalibrationWorkspaceTest},
       {"ScreenshotTest", MakeScreenshotTest},
   };
   // argv[1] may name one suite; the remaining arguments go to QTest.

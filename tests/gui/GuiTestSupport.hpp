@@ -13,6 +13,8 @@ namespace dynamap::app::gui::test {
 std::unique_ptr<QObject> MakeVoxelSetTest();
 std::unique_ptr<QObject> MakeMapsWorkspaceTest();
 std::unique_ptr<QObject> MakeMainWindowTest();
+std::unique_ptr<QObject> MakeMissionWorkspaceTest();
+std::unique_ptr<QObject> MakeCalibrationWorkspaceTest();
 std::unique_ptr<QObject> MakeScreenshotTest();
 
 // An 8 m x 5 m room (floor, walls 2.4 m high, a partition with a door gap, a desk and a

@@ -24,7 +24,9 @@ class MainWindowTest : public QObject {
 
   void OffersOnlyWorkingWorkspaces() {
     MainWindow window;
-    QCOMPARE(window.WorkspaceNames(), QStringList{QStringLiteral("Maps")});
+    QCOMPARE(window.WorkspaceNames(),
+             (QStringList{QStringLiteral("Calibration"), QStringLiteral("Mission"),
+                          QStringLiteral("Maps")}));
     QCOMPARE(window.CurrentWorkspace(), 0);
   }
 

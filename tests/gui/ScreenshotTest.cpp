@@ -1,17 +1,27 @@
-// Renders the Maps workspace in the main window with real maps and saves PNGs into the
-// build tree (screenshots/gui/): geb079.bt and a synthetic dual map with a person in the
-// dynamic layer. Checks that the pictures hold what they should (voxels, red dynamic ones).
+// Renders each workspace in the main window with real content and saves PNGs into the
+// build tree (screenshots/gui/): a short simulated mission on the small office (160×120
+// Kinects), the calibration wizard in the simulated room, and in the Maps workspace
+// geb079.bt and a synthetic dual map with a person in the dynamic layer. Checks that the
+// pictures hold what they should (voxels, red dynamic ones).
 #include <QDir>
 #include <QImage>
+#include <QSignalSpy>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <memory>
 
 #include "GuiTestSupport.hpp"
+#include "dynamap/app/gui/CalibrationResults.hpp"
+#include "dynamap/app/gui/CalibrationWorkspace.hpp"
+#include "dynamap/app/gui/DepthPreview.hpp"
 #include "dynamap/app/gui/MainWindow.hpp"
 #include "dynamap/app/gui/MapControls.hpp"
 #include "dynamap/app/gui/MapsWorkspace.hpp"
+#include "dynamap/app/gui/MissionPanel.hpp"
+#include "dynamap/app/gui/MissionWorkspace.hpp"
+#include "dynamap/app/gui/ResourceFiles.hpp"
 #include "dynamap/app/gui/VoxelView.hpp"
 
 namespace dynamap::app::gui::test {
@@ -56,7 +66,59 @@ class ScreenshotTest : public QObject {
   }
   void cleanupTestCase() { window_.reset(); }
 
+  void ShortMission() {
+    QTemporaryDir out;
+    window_->ShowWorkspace(1);
+    MissionWorkspace* mission = window_->Mission();
+    mission->Panel()->SetWorldFile(ResourcePath(QStringLiteral("worlds/small_office.yaml")));
+    mission->Panel()->SetKinectSize(160, 120);
+    mission->Panel()->SetTimeLimit(6.0);
+    mission->Panel()->SetMapRefresh(1.0);
+    mission->Panel()->SetOutputDir(out.path());
+    QVERIFY(mission->StartMission());
+    QTRY_COMPARE_WITH_TIMEOUT(mission->Session()->Phase(), MissionPhase::kFinished, 90000);
+    QTRY_VERIFY_WITH_TIMEOUT(mission->Session()->Map() != nullptr, 20000);
+    QTest::qWait(300);
+    const QImage view = mission->View()->grabFramebuffer();
+    const QImage whole = window_->grab().toImage();
+    view.save(QDir(out_dir_).filePath(QStringLiteral("mission_small_office_view.png")));
+    whole.save(QDir(out_dir_).filePath(QStringLiteral("mission_small_office.png")));
+    QVERIFY(DistinctColours(view) > 20);
+    QVERIFY(!mission->Depth(0)->Image().isNull());
+  }
+
+  void CalibrationWizard() {
+    QTemporaryDir out;
+    window_->ShowWorkspace(0);
+    CalibrationWorkspace* calibration = window_->Calibration();
+    calibration->SetWorldFile(ResourcePath(QStringLiteral("worlds/calibration_room.yaml")));
+    calibration->SetImageWidth(320);
+    calibration->SetSpeed(0.0);
+    calibration->SetOutputDir(out.path());
+    QSignalSpy started(calibration, &CalibrationWorkspace::SessionStarted);
+    calibration->BeginSession(calibration->BuildSetup());
+    QVERIFY(started.wait(20000));
+    QTRY_VERIFY_WITH_TIMEOUT(calibration->LastState().progress.complete, 30000);
+    calibration->Next();
+    QTRY_COMPARE_WITH_TIMEOUT(calibration->LastState().progress.step,
+                              calibration::SessionStep::kTurn, 5000);
+    calibration->DriveStep();
+    QTRY_VERIFY_WITH_TIMEOUT(calibration->LastState().progress.turned_left_deg > 60.0, 60000);
+    QTest::qWait(300);
+    window_->grab().toImage().save(
+        QDir(out_dir_).filePath(QStringLiteral("calibration_turn_step.png")));
+    calibration->Solve();
+    QTRY_COMPARE_WITH_TIMEOUT(calibration->LastState().progress.step,
+                              calibration::SessionStep::kReview, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(calibration->Results()->Table()->rowCount() > 0, 5000);
+    QTest::qWait(300);
+    window_->grab().toImage().save(
+        QDir(out_dir_).filePath(QStringLiteral("calibration_review.png")));
+    calibration->EndSession();
+  }
+
   void Geb079() {
+    window_->ShowWorkspace(2);
     Open(Geb079Path());
     const QImage view = Save(QStringLiteral("maps_geb079"));
     QVERIFY(DistinctColours(view) > 50);

@@ -19,8 +19,10 @@
 #include <vtkVersion.h>
 
 #include "dynamap/app/Version.hpp"
+#include "dynamap/app/gui/CalibrationWorkspace.hpp"
 #include "dynamap/app/gui/MapControls.hpp"
 #include "dynamap/app/gui/MapsWorkspace.hpp"
+#include "dynamap/app/gui/MissionWorkspace.hpp"
 #include "dynamap/app/gui/StatusPanel.hpp"
 #include "dynamap/app/gui/VoxelView.hpp"
 
@@ -69,13 +71,28 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setCentralWidget(central);
   connect(sidebar_, &QListWidget::currentRowChanged, stack_, &QStackedWidget::setCurrentIndex);
 
-  // Calibration and Mission join here once the guided session and the mission runtime
-  // offer their APIs; the side bar lists only workspaces that work.
+  calibration_ = new CalibrationWorkspace;
+  AddWorkspace(calibration_, tr("Calibration"),
+               tr("Calibrate the Kinect rig with the guided session"));
+  mission_ = new MissionWorkspace;
+  AddWorkspace(mission_, tr("Mission"), tr("Explore a simulated world and watch the maps grow"));
   maps_ = new MapsWorkspace;
   AddWorkspace(maps_, tr("Maps"), tr("Open, inspect and export saved maps"));
 
   status_panel_ = new StatusPanel;
   statusBar()->addPermanentWidget(status_panel_);
+  connect(mission_, &MissionWorkspace::StatusChanged, this,
+          [this](const QString& state, std::optional<std::uint64_t> dropped) {
+            status_panel_->SetConnection(RobotConnection::kSimulator);
+            status_panel_->SetMissionState(state);
+            status_panel_->SetDroppedFrames(dropped);
+          });
+  connect(mission_, &MissionWorkspace::ErrorOccurred, this, &MainWindow::ShowError);
+  connect(calibration_, &CalibrationWorkspace::ErrorOccurred, this, &MainWindow::ShowError);
+  connect(calibration_, &CalibrationWorkspace::StatusMessage, this,
+          [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
+  connect(calibration_, &CalibrationWorkspace::SessionStarted, this,
+          [this] { status_panel_->SetConnection(RobotConnection::kSimulator); });
 
   CreateActions();
   CreateMenus();
@@ -126,6 +143,8 @@ QAction* MainWindow::FindAction(const QString& object_name) const {
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   maps_->CancelWork();
+  mission_->StopMission();
+  calibration_->EndSession();
   SaveSettings();
   event->accept();
 }

@@ -303,6 +303,8 @@ void VoxelView::OnEndInteraction() {
   if (interacting_) SetInteracting(false);
 }
 
+vtkRenderer* VoxelView::Renderer() const { return renderer_; }
+
 std::size_t VoxelView::VisibleCount(VoxelLayer layer) const {
   return layer == VoxelLayer::kStatic ? visible_static_ : visible_dynamic_;
 }

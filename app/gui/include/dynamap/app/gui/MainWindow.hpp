@@ -17,7 +17,9 @@ class QStackedWidget;
 
 namespace dynamap::app::gui {
 
+class CalibrationWorkspace;
 class MapsWorkspace;
+class MissionWorkspace;
 class StatusPanel;
 
 class MainWindow : public QMainWindow {
@@ -31,6 +33,8 @@ class MainWindow : public QMainWindow {
   void OpenMap(const QString& file);
 
   [[nodiscard]] MapsWorkspace* Maps() const { return maps_; }
+  [[nodiscard]] MissionWorkspace* Mission() const { return mission_; }
+  [[nodiscard]] CalibrationWorkspace* Calibration() const { return calibration_; }
   [[nodiscard]] StatusPanel* Status() const { return status_panel_; }
   [[nodiscard]] const RecentFiles& Recent() const { return recent_; }
   // Names of the workspaces in the side bar, in order.
@@ -65,6 +69,8 @@ class MainWindow : public QMainWindow {
   QListWidget* sidebar_ = nullptr;
   QStackedWidget* stack_ = nullptr;
   MapsWorkspace* maps_ = nullptr;
+  MissionWorkspace* mission_ = nullptr;
+  CalibrationWorkspace* calibration_ = nullptr;
   StatusPanel* status_panel_ = nullptr;
   RecentFiles recent_;
 

@@ -54,6 +54,11 @@ class VoxelView : public QVTKOpenGLNativeWidget {
   void SetInteracting(bool interacting);
   [[nodiscard]] bool Interacting() const { return interacting_; }
 
+  // For overlays drawn in the same scene (the mission's robot, trail and path).
+  [[nodiscard]] vtkRenderer* Renderer() const;
+  // Renders one frame now (after overlays changed).
+  void Render();
+
   [[nodiscard]] std::size_t VisibleCount(VoxelLayer layer) const;
   [[nodiscard]] const VoxelFilter& Filter() const { return filter_; }
   [[nodiscard]] ColourMode Colours() const { return colour_mode_; }
@@ -74,7 +79,6 @@ class VoxelView : public QVTKOpenGLNativeWidget {
   void OnEndInteraction();
   void RebuildLayers();
   void ApplyColourMode();
-  void Render();
 
   std::shared_ptr<const VoxelSet> set_;
   VoxelFilter filter_;

@@ -1,0 +1,85 @@
+// The left panel of the Mission workspace: what to run (world, rig, pose source, Kinect
+// resolution, time limit, pace, 3D map refresh, results folder), Start / Pause / Resume /
+// Stop, the live figures of the running mission and the report when it has ended.
+#pragma once
+
+#include <QString>
+#include <QWidget>
+#include <optional>
+
+#include "dynamap/app/gui/MissionSession.hpp"
+#include "dynamap/app/runtime/MissionConfig.hpp"
+#include "dynamap/app/runtime/MissionSnapshot.hpp"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+
+namespace dynamap::app::gui {
+
+class MissionPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit MissionPanel(QWidget* parent = nullptr);
+
+  // The mission the controls describe; an empty results folder becomes a new folder under
+  // ~/dynamap-missions named after the start time.
+  [[nodiscard]] runtime::MissionConfig BuildConfig() const;
+  // Selects `file` (adding it to the list when it is not one of resources/).
+  void SetWorldFile(const QString& file);
+  void SetRigFile(const QString& file);
+  void SetKinectSize(int width, int height);
+  void SetTimeLimit(double seconds);
+  void SetMapRefresh(double seconds);
+  void SetOutputDir(const QString& dir);
+
+  // Enables the buttons and setup for `phase`.
+  void ShowPhase(MissionPhase phase);
+  void ShowSnapshot(const runtime::MissionSnapshot& snapshot);
+  void ShowReport(const std::optional<runtime::MissionReport>& report, const QString& out_dir);
+
+  [[nodiscard]] QPushButton* StartButton() const { return start_; }
+  [[nodiscard]] QPushButton* PauseButton() const { return pause_; }
+  [[nodiscard]] QPushButton* ResumeButton() const { return resume_; }
+  [[nodiscard]] QPushButton* StopButton() const { return stop_; }
+  [[nodiscard]] QString FiguresText() const;
+
+ signals:
+  void StartRequested();
+  void PauseRequested();
+  void ResumeRequested();
+  void StopRequested();
+
+ private:
+  QWidget* MakeSetupGroup();
+  QWidget* MakeFiguresGroup();
+  void BrowseFile(QComboBox* combo, const QString& title);
+
+  QWidget* setup_ = nullptr;
+  QComboBox* world_ = nullptr;
+  QComboBox* rig_ = nullptr;
+  QComboBox* poses_ = nullptr;
+  QComboBox* kinect_size_ = nullptr;
+  QDoubleSpinBox* time_limit_ = nullptr;
+  QComboBox* pace_ = nullptr;
+  QDoubleSpinBox* map_refresh_ = nullptr;
+  QLineEdit* out_dir_ = nullptr;
+  QPushButton* start_ = nullptr;
+  QPushButton* pause_ = nullptr;
+  QPushButton* resume_ = nullptr;
+  QPushButton* stop_ = nullptr;
+  QLabel* state_ = nullptr;
+  QLabel* sim_time_ = nullptr;
+  QLabel* distance_ = nullptr;
+  QLabel* frames_ = nullptr;
+  QLabel* dropped_ = nullptr;
+  QLabel* collisions_ = nullptr;
+  QLabel* target_ = nullptr;
+  QLabel* command_ = nullptr;
+  QLabel* report_ = nullptr;
+};
+
+}  // namespace dynamap::app::gui

@@ -1,0 +1,88 @@
+// One mission as the Mission workspace drives it: creates a runtime::MissionRuntime off the
+// GUI thread, starts, pauses, resumes and stops it, pulls Snapshot() at a few Hz, reloads
+// the 3D map whenever the runtime has saved a newer map.ot, and calls Finish() off the GUI
+// thread when the mission ends. The GUI thread never waits for the runtime.
+#pragma once
+
+#include <QDateTime>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+#include <memory>
+#include <optional>
+
+#include "dynamap/app/gui/BackgroundTask.hpp"
+#include "dynamap/app/gui/VoxelSet.hpp"
+#include "dynamap/app/runtime/MissionConfig.hpp"
+#include "dynamap/app/runtime/MissionSnapshot.hpp"
+
+namespace dynamap::app::runtime {
+class MissionRuntime;
+}
+
+namespace dynamap::app::gui {
+
+enum class MissionPhase {
+  kIdle,       // Nothing run yet.
+  kStarting,   // Loading world, rig and robot.
+  kRunning,
+  kPaused,
+  kFinishing,  // Ended (goal, time limit or Stop); scoring and writing results.
+  kFinished,   // Report available.
+  kFailed,     // Could not be created or finished; LastError() says why.
+};
+
+[[nodiscard]] QString PhaseName(MissionPhase phase);
+
+class MissionSession : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit MissionSession(QObject* parent = nullptr);
+  // Stops a running mission and waits for its threads (they leave within one cycle).
+  ~MissionSession() override;
+
+  // From idle, finished or failed. Returns false (and changes nothing) otherwise.
+  bool Start(runtime::MissionConfig config);
+  bool Pause();
+  bool Resume();
+  // Ends a starting, running or paused mission; results are still scored and written.
+  bool Stop();
+
+  [[nodiscard]] MissionPhase Phase() const { return phase_; }
+  [[nodiscard]] const runtime::MissionSnapshot& Snapshot() const { return snapshot_; }
+  [[nodiscard]] const std::optional<runtime::MissionReport>& Report() const { return report_; }
+  [[nodiscard]] const runtime::MissionConfig& Config() const { return config_; }
+  [[nodiscard]] std::shared_ptr<const VoxelSet> Map() const { return map_; }
+  [[nodiscard]] const QString& LastError() const { return last_error_; }
+  // Snapshot period, ms (default 250: 4 Hz).
+  void SetPollInterval(int ms) { poll_timer_.setInterval(ms); }
+
+ signals:
+  void PhaseChanged(dynamap::app::gui::MissionPhase phase);
+  void SnapshotUpdated();
+  void MapUpdated();
+  void Finished();
+  void ErrorOccurred(const QString& message);
+
+ private:
+  void SetPhase(MissionPhase phase);
+  void Fail(const QString& message);
+  void Poll();
+  void ReloadMapIfNewer();
+  void BeginFinish();
+
+  runtime::MissionConfig config_;
+  std::shared_ptr<runtime::MissionRuntime> runtime_;
+  MissionPhase phase_ = MissionPhase::kIdle;
+  runtime::MissionSnapshot snapshot_;
+  std::optional<runtime::MissionReport> report_;
+  std::shared_ptr<const VoxelSet> map_;
+  QDateTime map_loaded_time_;
+  QString last_error_;
+  QTimer poll_timer_;
+  BackgroundTask* lifecycle_task_ = nullptr;  // Create, then Finish.
+  BackgroundTask* map_task_ = nullptr;        // Reading map.ot.
+};
+
+}  // namespace dynamap::app::gui

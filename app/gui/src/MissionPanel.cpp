@@ -1,0 +1,275 @@
+#include "dynamap/app/gui/MissionPanel.hpp"
+
+#include <QComboBox>
+#include <QDateTime>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QStyle>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include "dynamap/app/gui/ResourceFiles.hpp"
+
+namespace dynamap::app::gui {
+
+namespace {
+
+QLabel* Value() {
+  auto* label = new QLabel(QStringLiteral("–"));
+  label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  return label;
+}
+
+void FillFiles(QComboBox* combo, const QStringList& files, const QString& preferred) {
+  for (const QString& file : files) combo->addItem(QFileInfo(file).fileName(), file);
+  const int index = combo->findText(preferred);
+  if (index >= 0) combo->setCurrentIndex(index);
+}
+
+void SelectFile(QComboBox* combo, const QString& file) {
+  const QString path = QFileInfo(file).absoluteFilePath();
+  int index = combo->findData(path);
+  if (index < 0) {
+    combo->addItem(QFileInfo(file).fileName(), path);
+    index = combo->count() - 1;
+  }
+  combo->setCurrentIndex(index);
+}
+
+}  // namespace
+
+MissionPanel::MissionPanel(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  setup_ = MakeSetupGroup();
+  layout->addWidget(setup_);
+
+  start_ = new QPushButton(style()->standardIcon(QStyle::SP_MediaPlay), tr("Start"));
+  pause_ = new QPushButton(style()->standardIcon(QStyle::SP_MediaPause), tr("Pause"));
+  resume_ = new QPushButton(style()->standardIcon(QStyle::SP_MediaPlay), tr("Resume"));
+  stop_ = new QPushButton(style()->standardIcon(QStyle::SP_MediaStop), tr("Stop"));
+  start_->setObjectName(QStringLiteral("mission_start"));
+  start_->setToolTip(tr("Start the mission (F9)"));
+  start_->setShortcut(Qt::Key_F9);
+  pause_->setToolTip(tr("Pause every runtime thread within one cycle (F10)"));
+  pause_->setShortcut(Qt::Key_F10);
+  resume_->setToolTip(tr("Carry on (F10)"));
+  resume_->setShortcut(Qt::Key_F10);
+  stop_->setToolTip(tr("End the mission; the results are still scored and saved (Shift+F9)"));
+  stop_->setShortcut(Qt::SHIFT | Qt::Key_F9);
+  auto* buttons = new QHBoxLayout;
+  for (QPushButton* b : {start_, pause_, resume_, stop_}) buttons->addWidget(b);
+  layout->addLayout(buttons);
+  connect(start_, &QPushButton::clicked, this, &MissionPanel::StartRequested);
+  connect(pause_, &QPushButton::clicked, this, &MissionPanel::PauseRequested);
+  connect(resume_, &QPushButton::clicked, this, &MissionPanel::ResumeRequested);
+  connect(stop_, &QPushButton::clicked, this, &MissionPanel::StopRequested);
+
+  layout->addWidget(MakeFiguresGroup());
+  auto* report_box = new QGroupBox(tr("Report"));
+  auto* report_layout = new QVBoxLayout(report_box);
+  report_ = new QLabel(tr("Shown when the mission has ended."));
+  report_->setWordWrap(true);
+  report_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  report_layout->addWidget(report_);
+  layout->addWidget(report_box);
+  layout->addStretch(1);
+  ShowPhase(MissionPhase::kIdle);
+}
+
+QWidget* MissionPanel::MakeSetupGroup() {
+  auto* box = new QGroupBox(tr("Mission"));
+  auto* form = new QFormLayout(box);
+  const auto with_browse = [this](QComboBox* combo, const QString& title) {
+    auto* row = new QHBoxLayout;
+    row->addWidget(combo, 1);
+    auto* browse = new QToolButton;
+    browse->setText(QStringLiteral("…"));
+    browse->setToolTip(title);
+    connect(browse, &QToolButton::clicked, this, [this, combo, title] { BrowseFile(combo, title); });
+    row->addWidget(browse);
+    return row;
+  };
+  world_ = new QComboBox;
+  FillFiles(world_, ResourceFiles(QStringLiteral("worlds")), QStringLiteral("office.yaml"));
+  form->addRow(tr("World"), with_browse(world_, tr("Choose a world file")));
+  rig_ = new QComboBox;
+  FillFiles(rig_, ResourceFiles(QStringLiteral("rigs")), QStringLiteral("two_kinects.yaml"));
+  form->addRow(tr("Rig"), with_browse(rig_, tr("Choose a rig file")));
+  poses_ = new QComboBox;
+  poses_->addItem(tr("SLAM"), static_cast<int>(runtime::PoseSource::kSlam));
+  poses_->addItem(tr("Odometry"), static_cast<int>(runtime::PoseSource::kOdometry));
+  poses_->addItem(tr("Ground truth"), static_cast<int>(runtime::PoseSource::kGroundTruth));
+  form->addRow(tr("Poses"), poses_);
+  kinect_size_ = new QComboBox;
+  for (const QSize size : {QSize(160, 120), QSize(320, 240), QSize(640, 480)}) {
+    kinect_size_->addItem(QStringLiteral("%1 × %2").arg(size.width()).arg(size.height()), size);
+  }
+  kinect_size_->setCurrentIndex(1);
+  form->addRow(tr("Kinect images"), kinect_size_);
+  time_limit_ = new QDoubleSpinBox;
+  time_limit_->setRange(1.0, 7200.0);
+  time_limit_->setDecimals(0);
+  time_limit_->setSuffix(tr(" s"));
+  time_limit_->setValue(600.0);
+  time_limit_->setToolTip(tr("Simulated time after which the mission is ended"));
+  form->addRow(tr("Time limit"), time_limit_);
+  pace_ = new QComboBox;
+  pace_->addItem(tr("As fast as possible"), 0.0);
+  pace_->addItem(tr("Real time"), 1.0);
+  pace_->setToolTip(tr("Real time drops the frames the mapper cannot keep up with, as on the robot"));
+  form->addRow(tr("Pace"), pace_);
+  map_refresh_ = new QDoubleSpinBox;
+  map_refresh_->setRange(1.0, 600.0);
+  map_refresh_->setDecimals(0);
+  map_refresh_->setSuffix(tr(" s"));
+  map_refresh_->setValue(5.0);
+  map_refresh_->setToolTip(tr("Simulated seconds between the map saves the 3D view shows"));
+  form->addRow(tr("3D map refresh"), map_refresh_);
+  out_dir_ = new QLineEdit;
+  out_dir_->setPlaceholderText(tr("new folder in ~/dynamap-missions"));
+  form->addRow(tr("Results"), out_dir_);
+  return box;
+}
+
+QWidget* MissionPanel::MakeFiguresGroup() {
+  auto* box = new QGroupBox(tr("Live"));
+  auto* form = new QFormLayout(box);
+  state_ = Value();
+  sim_time_ = Value();
+  distance_ = Value();
+  frames_ = Value();
+  dropped_ = Value();
+  collisions_ = Value();
+  target_ = Value();
+  command_ = Value();
+  form->addRow(tr("State"), state_);
+  form->addRow(tr("Simulated time"), sim_time_);
+  form->addRow(tr("Distance driven"), distance_);
+  form->addRow(tr("Frames mapped"), frames_);
+  form->addRow(tr("Frames dropped"), dropped_);
+  form->addRow(tr("Collisions"), collisions_);
+  form->addRow(tr("Target"), target_);
+  form->addRow(tr("Command"), command_);
+  return box;
+}
+
+void MissionPanel::BrowseFile(QComboBox* combo, const QString& title) {
+  const QString start = QFileInfo(combo->currentData().toString()).absolutePath();
+  const QString file =
+      QFileDialog::getOpenFileName(this, title, start, tr("YAML files (*.yaml);;All files (*)"));
+  if (!file.isEmpty()) SelectFile(combo, file);
+}
+
+runtime::MissionConfig MissionPanel::BuildConfig() const {
+  runtime::MissionConfig config;
+  config.world_file = world_->currentData().toString().toStdString();
+  config.rig_file = rig_->currentData().toString().toStdString();
+  // The runtime loads exactly the files it is given.
+  config.robot_file = ResourcePath(QStringLiteral("robots/segway_rmp50.yaml")).toStdString();
+  config.poses = static_cast<runtime::PoseSource>(poses_->currentData().toInt());
+  const QSize size = kinect_size_->currentData().toSize();
+  config.kinect_width = size.width();
+  config.kinect_height = size.height();
+  config.max_time_s = time_limit_->value();
+  config.speed = pace_->currentData().toDouble();
+  config.save_period_s = map_refresh_->value();
+  QString out = out_dir_->text().trimmed();
+  if (out.isEmpty()) {
+    out = QDir::home().filePath(
+        QStringLiteral("dynamap-missions/%1")
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss"))));
+  }
+  config.out_dir = out.toStdString();
+  return config;
+}
+
+void MissionPanel::SetWorldFile(const QString& file) { SelectFile(world_, file); }
+void MissionPanel::SetRigFile(const QString& file) { SelectFile(rig_, file); }
+
+void MissionPanel::SetKinectSize(int width, int height) {
+  const int index = kinect_size_->findData(QSize(width, height));
+  if (index >= 0) {
+    kinect_size_->setCurrentIndex(index);
+  } else {
+    kinect_size_->addItem(QStringLiteral("%1 × %2").arg(width).arg(height), QSize(width, height));
+    kinect_size_->setCurrentIndex(kinect_size_->count() - 1);
+  }
+}
+
+void MissionPanel::SetTimeLimit(double seconds) { time_limit_->setValue(seconds); }
+void MissionPanel::SetMapRefresh(double seconds) { map_refresh_->setValue(seconds); }
+void MissionPanel::SetOutputDir(const QString& dir) { out_dir_->setText(dir); }
+
+void MissionPanel::ShowPhase(MissionPhase phase) {
+  const bool idle = phase == MissionPhase::kIdle || phase == MissionPhase::kFinished ||
+                    phase == MissionPhase::kFailed;
+  setup_->setEnabled(idle);
+  start_->setEnabled(idle);
+  pause_->setEnabled(phase == MissionPhase::kRunning);
+  resume_->setEnabled(phase == MissionPhase::kPaused);
+  stop_->setEnabled(phase == MissionPhase::kStarting || phase == MissionPhase::kRunning ||
+                    phase == MissionPhase::kPaused);
+  pause_->setVisible(phase != MissionPhase::kPaused);
+  resume_->setVisible(phase == MissionPhase::kPaused);
+  state_->setText(PhaseName(phase));
+  if (phase == MissionPhase::kStarting) report_->setText(tr("Shown when the mission has ended."));
+}
+
+void MissionPanel::ShowSnapshot(const runtime::MissionSnapshot& s) {
+  sim_time_->setText(tr("%1 s").arg(s.sim_time_s, 0, 'f', 1));
+  distance_->setText(tr("%1 m").arg(s.distance_m, 0, 'f', 2));
+  frames_->setText(tr("%1 of %2").arg(s.frames_processed).arg(s.frames_delivered));
+  dropped_->setText(QString::number(s.frames_dropped));
+  collisions_->setText(tr("%1 (guard stops %2)").arg(s.collisions).arg(s.guard_stops));
+  target_->setText(s.has_goal ? tr("%1 at (%2, %3) m, %4 candidates")
+                                    .arg(QString::fromLatin1(planning::TargetKindName(s.target_kind)))
+                                    .arg(s.goal.x(), 0, 'f', 1)
+                                    .arg(s.goal.y(), 0, 'f', 1)
+                                    .arg(s.candidates.size())
+                              : (s.exploration_done ? tr("exploration done") : tr("none")));
+  command_->setText(tr("v %1 m/s, ω %2 rad/s").arg(s.command.v, 0, 'f', 2).arg(s.command.omega, 0, 'f', 2));
+}
+
+void MissionPanel::ShowReport(const std::optional<runtime::MissionReport>& report,
+                              const QString& out_dir) {
+  if (!report) return;
+  const runtime::MissionReport& r = *report;
+  report_->setText(
+      tr("<b>%1</b> after %2 s simulated<br>"
+         "explored free area %3 %, surfaces %4 %<br>"
+         "path %5 m, collisions %6<br>"
+         "ATE %7 m (odometry alone %8 m)<br>"
+         "static / dynamic / associated accuracy %9 / %10 / %11<br>"
+         "frames %12 mapped, %13 dropped<br>"
+         "results in <tt>%14</tt>")
+          .arg(r.completed ? tr("Exploration complete") : tr("Mission ended"))
+          .arg(r.mission_time_s, 0, 'f', 1)
+          .arg(100.0 * r.explored_free_fraction, 0, 'f', 1)
+          .arg(100.0 * r.surface_coverage, 0, 'f', 1)
+          .arg(r.path_length_m, 0, 'f', 2)
+          .arg(r.collisions)
+          .arg(r.ate_rmse_m, 0, 'f', 3)
+          .arg(r.odometry_ate_rmse_m, 0, 'f', 3)
+          .arg(r.static_accuracy, 0, 'f', 3)
+          .arg(r.dynamic_accuracy, 0, 'f', 3)
+          .arg(r.associated_accuracy, 0, 'f', 3)
+          .arg(r.frames_processed)
+          .arg(r.frames_dropped)
+          .arg(out_dir.toHtmlEscaped()));
+}
+
+QString MissionPanel::FiguresText() const {
+  return QStringList{state_->text(), sim_time_->text(), distance_->text(), frames_->text(),
+                     dropped_->text(), collisions_->text(), target_->text()}
+      .join(QStringLiteral(" | "));
+}
+
+}  // namespace dynamap::app::gui

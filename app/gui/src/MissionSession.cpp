@@ -1,0 +1,173 @@
+#include "dynamap/app/gui/MissionSession.hpp"
+
+#include <QFileInfo>
+
+#include "dynamap/app/runtime/MissionRuntime.hpp"
+#include "dynamap/mapping/MapFiles.hpp"
+
+namespace dynamap::app::gui {
+
+QString PhaseName(MissionPhase phase) {
+  switch (phase) {
+    case MissionPhase::kIdle:
+      return QObject::tr("idle");
+    case MissionPhase::kStarting:
+      return QObject::tr("starting");
+    case MissionPhase::kRunning:
+      return QObject::tr("running");
+    case MissionPhase::kPaused:
+      return QObject::tr("paused");
+    case MissionPhase::kFinishing:
+      return QObject::tr("finishing");
+    case MissionPhase::kFinished:
+      return QObject::tr("finished");
+    case MissionPhase::kFailed:
+      return QObject::tr("failed");
+  }
+  return QString();
+}
+
+MissionSession::MissionSession(QObject* parent) : QObject(parent) {
+  lifecycle_task_ = new BackgroundTask(this);
+  map_task_ = new BackgroundTask(this);
+  poll_timer_.setInterval(250);
+  connect(&poll_timer_, &QTimer::timeout, this, &MissionSession::Poll);
+  connect(lifecycle_task_, &BackgroundTask::Finished, this,
+          [this](bool cancelled, const QString& error) {
+            if (!cancelled && !error.isEmpty()) Fail(error);
+          });
+}
+
+MissionSession::~MissionSession() {
+  poll_timer_.stop();
+  if (runtime_) runtime_->Stop();
+  // The tasks' destructors (children) wait for Create/Finish; the runtime's joins its
+  // threads, which leave within one cycle once stopped.
+}
+
+bool MissionSession::Start(runtime::MissionConfig config) {
+  if (phase_ != MissionPhase::kIdle && phase_ != MissionPhase::kFinished &&
+      phase_ != MissionPhase::kFailed) {
+    return false;
+  }
+  config_ = std::move(config);
+  runtime_.reset();
+  report_.reset();
+  map_.reset();
+  map_loaded_time_ = QDateTime();
+  snapshot_ = runtime::MissionSnapshot();
+  last_error_.clear();
+  SetPhase(MissionPhase::kStarting);
+  emit SnapshotUpdated();
+  emit MapUpdated();
+  lifecycle_task_->Start(tr("Starting mission"), [this, config = config_](
+                                                     const BackgroundTask::Context& context) {
+    auto created = runtime::MissionRuntime::Create(config);
+    if (!created) {
+      const QString message = QString::fromStdString(created.error().message);
+      context.Deliver([this, message] { Fail(message); });
+      return;
+    }
+    std::shared_ptr<runtime::MissionRuntime> runtime = std::move(created).value();
+    context.Deliver([this, runtime] {
+      runtime_ = runtime;
+      runtime_->Start();
+      SetPhase(MissionPhase::kRunning);
+      poll_timer_.start();
+    });
+  });
+  return true;
+}
+
+bool MissionSession::Pause() {
+  if (phase_ != MissionPhase::kRunning || !runtime_->Pause()) return false;
+  SetPhase(MissionPhase::kPaused);
+  return true;
+}
+
+bool MissionSession::Resume() {
+  if (phase_ != MissionPhase::kPaused || !runtime_->Resume()) return false;
+  SetPhase(MissionPhase::kRunning);
+  return true;
+}
+
+bool MissionSession::Stop() {
+  if (phase_ == MissionPhase::kStarting) {
+    lifecycle_task_->Cancel();  // The runtime being created is dropped unstarted.
+    SetPhase(MissionPhase::kIdle);
+    return true;
+  }
+  if (phase_ != MissionPhase::kRunning && phase_ != MissionPhase::kPaused) return false;
+  runtime_->Stop();  // Wakes every worker; Poll() sees the mission stopping.
+  Poll();
+  return true;
+}
+
+void MissionSession::SetPhase(MissionPhase phase) {
+  if (phase == phase_) return;
+  phase_ = phase;
+  emit PhaseChanged(phase);
+}
+
+void MissionSession::Fail(const QString& message) {
+  poll_timer_.stop();
+  last_error_ = message;
+  SetPhase(MissionPhase::kFailed);
+  emit ErrorOccurred(message);
+}
+
+void MissionSession::Poll() {
+  if (!runtime_ || (phase_ != MissionPhase::kRunning && phase_ != MissionPhase::kPaused)) return;
+  snapshot_ = runtime_->Snapshot();
+  emit SnapshotUpdated();
+  ReloadMapIfNewer();
+  const auto state = snapshot_.state;
+  if (state == runtime::MissionState::kStopping || state == runtime::MissionState::kFinished) {
+    BeginFinish();
+  }
+}
+
+void MissionSession::ReloadMapIfNewer() {
+  if (map_task_->Running()) return;
+  const QString file = QString::fromStdString(config_.out_dir + "/map.ot");
+  const QFileInfo info(file);
+  if (!info.isFile() || info.lastModified() == map_loaded_time_) return;
+  map_loaded_time_ = info.lastModified();
+  map_task_->Start(tr("Reading the mission map"), [this, file](const BackgroundTask::Context& c) {
+    auto tree = mapping::LoadMap(file.toStdString());
+    if (!tree) return;  // Retried at the next save; the file is replaced atomically.
+    auto voxels = ExtractVoxels(**tree, c.CancelFlag(), [](double) {});
+    if (!voxels) return;
+    auto set = std::make_shared<const VoxelSet>(std::move(*voxels));
+    c.Deliver([this, set] {
+      map_ = set;
+      emit MapUpdated();
+    });
+  });
+}
+
+void MissionSession::BeginFinish() {
+  poll_timer_.stop();
+  SetPhase(MissionPhase::kFinishing);
+  lifecycle_task_->Start(tr("Scoring the mission"), [this, runtime = runtime_](
+                                                        const BackgroundTask::Context& context) {
+    auto report = runtime->Finish();  // Joins the runtime's threads, scores, writes files.
+    const runtime::MissionSnapshot last = runtime->Snapshot();
+    if (!report) {
+      const QString message = QString::fromStdString(report.error().message);
+      context.Deliver([this, message] { Fail(message); });
+      return;
+    }
+    context.Deliver([this, last, r = *report] {
+      snapshot_ = last;
+      report_ = r;
+      SetPhase(MissionPhase::kFinished);
+      emit SnapshotUpdated();
+      map_loaded_time_ = QDateTime();  // Finish() wrote the final map.
+      ReloadMapIfNewer();
+      emit Finished();
+    });
+  });
+}
+
+}  // namespace dynamap::app::gui
