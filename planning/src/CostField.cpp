@@ -1,34 +1,51 @@
 #include "dynamap/planning/CostField.hpp"
 
 #include <cassert>
+#include <functional>
 #include <opencv2/imgproc.hpp>
 
 namespace dynamap::planning {
 
-TraversalGrid BuildTraversalGrid(const GridMap& map, const CostFieldConfig& config) {
-  TraversalGrid grid(map.width, map.height, 0.0);
-  if (map.width == 0 || map.height == 0) return grid;
+namespace {
+
+// Distance (cells) from every cell to the nearest cell `is_source` accepts; sources get 0.
+cv::Mat DistanceTo(const GridMap& map, const std::function<bool(CellState)>& is_source) {
   // distanceTransform measures the distance to the nearest zero pixel: zero = source.
-  cv::Mat free_mask(map.height, map.width, CV_8UC1);
+  cv::Mat mask(map.height, map.width, CV_8UC1);
   for (int y = 0; y < map.height; ++y) {
-    auto* row = free_mask.ptr<std::uint8_t>(y);
+    auto* row = mask.ptr<std::uint8_t>(y);
     for (int x = 0; x < map.width; ++x) {
-      const CellState s = map.cells[static_cast<std::size_t>(y) * map.width + x];
-      const bool source = s == CellState::kObstacle || s == CellState::kHole ||
-                          (s == CellState::kUnknown && config.unknown_is_obstacle);
-      row[x] = source ? 0 : 255;
+      row[x] = is_source(map.cells[static_cast<std::size_t>(y) * map.width + x]) ? 0 : 255;
     }
   }
   cv::Mat distance;
-  cv::distanceTransform(free_mask, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  cv::distanceTransform(mask, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  return distance;
+}
+
+}  // namespace
+
+TraversalGrid BuildTraversalGrid(const GridMap& map, const CostFieldConfig& config) {
+  TraversalGrid grid(map.width, map.height, 0.0);
+  if (map.width == 0 || map.height == 0) return grid;
+  const cv::Mat to_obstacle = DistanceTo(
+      map, [](CellState s) { return s == CellState::kObstacle || s == CellState::kHole; });
+  cv::Mat to_unknown;
+  if (config.unknown_is_obstacle) {
+    to_unknown = DistanceTo(map, [](CellState s) { return s == CellState::kUnknown; });
+  }
   const double radius_cells = config.robot_radius_m / map.resolution_m;
+  const double unknown_cells = config.unknown_radius_m / map.resolution_m;
   const double range_cells = config.proximity_range_m / map.resolution_m;
   for (int y = 0; y < map.height; ++y) {
-    const auto* row = distance.ptr<float>(y);
+    const auto* row = to_obstacle.ptr<float>(y);
+    const float* unknown_row = to_unknown.empty() ? nullptr : to_unknown.ptr<float>(y);
     for (int x = 0; x < map.width; ++x) {
       const double d = row[x];
       double& p = grid.penalty[static_cast<std::size_t>(y) * map.width + x];
-      if (free_mask.at<std::uint8_t>(y, x) == 0 || d < radius_cells) {
+      const bool near_unknown =
+          unknown_row != nullptr && (unknown_row[x] == 0.0f || unknown_row[x] < unknown_cells);
+      if (d == 0.0 || d < radius_cells || near_unknown) {
         p = kInfinity;
       } else if (range_cells > 0.0 && d < radius_cells + range_cells) {
         p = config.proximity_weight * (1.0 - (d - radius_cells) / range_cells);

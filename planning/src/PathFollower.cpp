@@ -46,7 +46,9 @@ FollowerOutput PathFollower::Step(const robotio::Pose2D& pose, double clearance_
   out.cross_track_m = path_.size() > 1 ? best : (p - path_[0]).norm();
   // Lookahead point: walk lookahead_m along the path from the projection.
   Eigen::Vector2d target = path_.back();
-  double remaining = config_.lookahead_m;
+  double remaining = std::clamp(config_.min_lookahead_m + std::max(0.0, clearance_m),
+                                config_.min_lookahead_m,
+                                std::max(config_.min_lookahead_m, config_.lookahead_m));
   if (path_.size() > 1) {
     Eigen::Vector2d from = path_[seg] + seg_t * (path_[seg + 1] - path_[seg]);
     for (std::size_t i = seg; i + 1 < path_.size(); ++i) {
@@ -71,13 +73,15 @@ FollowerOutput PathFollower::Step(const robotio::Pose2D& pose, double clearance_
     v *= std::cos(heading_error * (M_PI / 2.0) / config_.turn_in_place_rad);
   }
   const double span = std::max(1e-6, config_.slow_clearance_m - config_.stop_clearance_m);
-  v *= Clamp((clearance_m - config_.stop_clearance_m) / span, 0.0, 1.0);
+  const double creep =
+      std::min(1.0, config_.creep_speed_mps / std::max(1e-6, config_.max_speed_mps));
+  v *= Clamp((clearance_m - config_.stop_clearance_m) / span, creep, 1.0);
   // Brake so that the speed is down to what one step may shed when the goal tolerance is
   // reached, where the command drops to zero. The braking curve assumes half the base's
   // deceleration: commands act a step late, and the full-deceleration curve overshoots.
   const double to_goal = (path_.back() - p).norm() - config_.goal_tolerance_m;
-  const double creep = dt_s > 0.0 ? config_.max_accel_mps2 * dt_s : 0.05;
-  v = std::min(v, std::max(creep, std::sqrt(config_.max_accel_mps2 * std::max(0.0, to_goal))));
+  const double last_step = dt_s > 0.0 ? config_.max_accel_mps2 * dt_s : 0.05;
+  v = std::min(v, std::max(last_step, std::sqrt(config_.max_accel_mps2 * std::max(0.0, to_goal))));
   double omega = Clamp(config_.heading_gain * heading_error, -config_.max_yaw_rate_radps,
                        config_.max_yaw_rate_radps);
   // Acceleration limits relative to the previous command.

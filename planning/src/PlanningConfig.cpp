@@ -11,6 +11,7 @@ void ReadProjection(robotio::ConfigNode& n, ProjectionConfig* c) {
   n.Read("step_height_m", &c->step_height_m, 0.0, 0.5);
   n.Read("floor_band_m", &c->floor_band_m, 0.0, 0.5);
   n.Read("hole_depth_m", &c->hole_depth_m, 0.0, 3.0);
+  n.Read("max_floor_gap_m", &c->max_floor_gap_m, 0.0, 1.0);
 }
 
 void ReadCost(robotio::ConfigNode& n, CostFieldConfig* c) {
@@ -18,6 +19,7 @@ void ReadCost(robotio::ConfigNode& n, CostFieldConfig* c) {
   n.Read("proximity_range_m", &c->proximity_range_m, 0.0, 5.0);
   n.Read("proximity_weight", &c->proximity_weight, 0.0, 100.0);
   n.Read("unknown_is_obstacle", &c->unknown_is_obstacle);
+  n.Read("unknown_radius_m", &c->unknown_radius_m, 0.0, 2.0);
 }
 
 void ReadTargets(robotio::ConfigNode& n, TargetPlannerConfig* c) {
@@ -44,10 +46,12 @@ void ReadFollower(robotio::ConfigNode& n, PathFollowerConfig* c) {
   n.Read("max_accel_mps2", &c->max_accel_mps2, 0.01, 10.0);
   n.Read("max_yaw_accel_radps2", &c->max_yaw_accel_radps2, 0.01, 50.0);
   n.Read("lookahead_m", &c->lookahead_m, 0.05, 5.0);
+  n.Read("min_lookahead_m", &c->min_lookahead_m, 0.05, 5.0);
   n.Read("heading_gain", &c->heading_gain, 0.0, 20.0);
   n.Read("turn_in_place_rad", &c->turn_in_place_rad, 0.05, 3.2);
   n.Read("slow_clearance_m", &c->slow_clearance_m, 0.0, 5.0);
   n.Read("stop_clearance_m", &c->stop_clearance_m, 0.0, 5.0);
+  n.Read("creep_speed_mps", &c->creep_speed_mps, 0.0, 1.0);
   n.Read("goal_tolerance_m", &c->goal_tolerance_m, 0.01, 5.0);
 }
 

@@ -1,4 +1,5 @@
-// Projected map → traversal grid: obstacles and holes inflated by the robot radius and a
+// Projected map → traversal grid: obstacles and holes inflated by the robot radius (unknown
+// cells by a smaller radius) and a
 // proximity penalty that decays with the distance to them (distance transform; thesis 6.1,
 // 6.3). Also the cell-wise difference two grids hand to D* Lite as edge changes.
 #pragma once
@@ -15,8 +16,14 @@ struct CostFieldConfig {
                                     // to an obstacle or hole are blocked.
   double proximity_range_m = 0.5;   // m beyond the radius over which the penalty decays to 0.
   double proximity_weight = 2.0;    // Penalty at the inflated boundary (relative extra cost).
-  bool unknown_is_obstacle = true;  // Unknown cells block (and inflate) like obstacles;
+  bool unknown_is_obstacle = true;  // Unknown cells block (inflated by unknown_radius_m);
                                     // false plans optimistically through them.
+  double unknown_radius_m = 0.2;    // m, cells nearer than this to unknown ones are blocked.
+                                    // Less than the robot radius: beside a door post or a
+                                    // desk the floor in its shadow stays unseen, and a full
+                                    // inflation of it closes doorways the robot fits through.
+                                    // The footprint may overhang unseen floor by the
+                                    // difference; the collision guard watches it.
 };
 
 [[nodiscard]] TraversalGrid BuildTraversalGrid(const GridMap& map, const CostFieldConfig& config);

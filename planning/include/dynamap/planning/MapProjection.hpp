@@ -27,6 +27,8 @@ struct ProjectionConfig {
   double step_height_m = 0.08;   // m, tallest edge the base drives over; higher is obstacle.
   double floor_band_m = 0.06;    // m, |z| within which an occupied voxel is floor evidence.
   double hole_depth_m = 0.3;     // m below the floor band searched for free space (holes).
+  double max_floor_gap_m = 0.15; // m, unknown gaps this narrow inside seen floor are floor
+                                 // for the planner (CloseFloorGaps); 0 keeps them unknown.
 };
 
 // State of the column whose centre is (x_m, y_m) in the map frame. Voxels are sampled at

@@ -16,11 +16,17 @@ struct PathFollowerConfig {
   double max_yaw_rate_radps = 1.5;     // rad/s, base limit.
   double max_accel_mps2 = 0.8;         // m/s², base limit, also used for braking to the goal.
   double max_yaw_accel_radps2 = 3.0;   // rad/s², base limit.
-  double lookahead_m = 0.6;            // m along the path ahead of the robot's projection.
+  double lookahead_m = 0.6;            // m along the path ahead of the robot's projection ...
+  double min_lookahead_m = 0.25;       // m, ... shrinking to this plus the clearance in tight
+                                       // places, so turns behind doorways are not cut.
   double heading_gain = 2.0;           // 1/s, ω = gain · heading error (before limits).
   double turn_in_place_rad = 0.8;      // rad, above this heading error the robot only turns.
   double slow_clearance_m = 0.6;       // m, below this clearance the speed scales down ...
-  double stop_clearance_m = 0.05;      // m, ... reaching 0 at this clearance (footprint edge).
+  double stop_clearance_m = 0.05;      // m, ... reaching creep_speed_mps at this clearance.
+  double creep_speed_mps = 0.1;        // m/s, slowest forward speed on a clear heading: the
+                                       // grid's clearance is quantised to cells and reads 0-5 cm
+                                       // in a doorway the robot fits through; the collision
+                                       // guard, not the follower, stops for real contact.
   double goal_tolerance_m = 0.15;      // m, goal reached within this distance.
 };
 

@@ -1,0 +1,17 @@
+// Fills narrow unknown gaps inside seen floor. Far from the Kinects, rays meet the floor at
+// grazing angles and sample it in stripes sparser than the voxels, so the projected floor
+// is speckled with unknown cells; inflated like obstacles they would cut the seen floor
+// into islands the planner cannot cross, and every speckle would be a frontier.
+#pragma once
+
+#include "dynamap/planning/GridMap.hpp"
+
+namespace dynamap::planning {
+
+// Morphological closing of the navigable cells with a disc of diameter `max_gap_m`: unknown
+// cells it covers become navigable. Obstacles and holes are never changed, and the outer
+// edge of the seen floor does not grow (closing only fills concavities and gaps narrower
+// than the disc). Returns the number of cells filled.
+int CloseFloorGaps(GridMap& map, double max_gap_m);
+
+}  // namespace dynamap::planning

@@ -1,0 +1,40 @@
+#include "dynamap/planning/MapGuard.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dynamap::planning {
+
+double DistanceToKnownObstacle(const GridMap& map, double x_m, double y_m, double search_m) {
+  const GridIndex c = map.CellAt(x_m, y_m);
+  const int r = static_cast<int>(std::ceil(search_m / map.resolution_m)) + 1;
+  const double half = 0.5 * map.resolution_m;
+  double best = search_m;
+  for (int y = c.y - r; y <= c.y + r; ++y) {
+    for (int x = c.x - r; x <= c.x + r; ++x) {
+      const GridIndex n{x, y};
+      if (!map.Contains(n) || map.At(n) != CellState::kObstacle) continue;
+      // Nearest point of the cell's square to the centre.
+      const double dx = std::max(0.0, std::abs(map.CenterX(x) - x_m) - half);
+      const double dy = std::max(0.0, std::abs(map.CenterY(y) - y_m) - half);
+      best = std::min(best, std::hypot(dx, dy));
+    }
+  }
+  return best;
+}
+
+bool DrivesIntoKnownObstacle(const GridMap& map, const robotio::Pose2D& pose,
+                             const robotio::VelocityCommand& command, double footprint_m,
+                             double horizon_s) {
+  if (std::abs(command.v) < 1e-6) return false;
+  // Straight-line prediction over the short horizon (the arc differs by millimetres).
+  const double heading = pose.theta + 0.5 * command.omega * horizon_s;
+  const double x = pose.x + command.v * horizon_s * std::cos(heading);
+  const double y = pose.y + command.v * horizon_s * std::sin(heading);
+  const double search = footprint_m + std::abs(command.v) * horizon_s + map.resolution_m;
+  const double after = DistanceToKnownObstacle(map, x, y, search);
+  if (after >= footprint_m) return false;
+  return after < DistanceToKnownObstacle(map, pose.x, pose.y, search);
+}
+
+}  // namespace dynamap::planning

@@ -1,0 +1,48 @@
+#include "dynamap/planning/TargetSelection.hpp"
+
+#include <cmath>
+
+namespace dynamap::planning {
+
+namespace {
+
+double DistanceM(const GridMap& map, GridIndex a, GridIndex b) {
+  return std::hypot(a.x - b.x, a.y - b.y) * map.resolution_m;
+}
+
+}  // namespace
+
+TargetSelection SelectTarget(const std::vector<TargetCandidate>& candidates,
+                             const std::optional<TargetCandidate>& current, const GridMap& map,
+                             GridIndex robot, const TargetSelectionConfig& config) {
+  TargetSelection selection;
+  const TargetCandidate* best = nullptr;
+  const TargetCandidate* same = nullptr;
+  for (const TargetCandidate& c : candidates) {
+    if (!std::isfinite(c.score)) continue;
+    if (DistanceM(map, c.viewpoint, robot) <= config.near_m) {
+      selection.too_near.push_back(c);
+      continue;
+    }
+    if (best == nullptr || c.score > best->score) best = &c;
+    if (current && c.kind == current->kind &&
+        DistanceM(map, c.viewpoint, current->viewpoint) <= config.same_target_m &&
+        (same == nullptr || DistanceM(map, c.viewpoint, current->viewpoint) <
+                                DistanceM(map, same->viewpoint, current->viewpoint))) {
+      same = &c;
+    }
+  }
+  if (best == nullptr) return selection;
+  if (same != nullptr && best->score < config.switch_ratio * same->score) {
+    // Keep driving to the same place: the goal cell stays, so the path search only repairs.
+    TargetCandidate kept = *same;
+    kept.viewpoint = current->viewpoint;
+    selection.chosen = kept;
+    selection.kept_current = true;
+    return selection;
+  }
+  selection.chosen = *best;
+  return selection;
+}
+
+}  // namespace dynamap::planning

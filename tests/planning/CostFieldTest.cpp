@@ -1,0 +1,51 @@
+#include "dynamap/planning/CostField.hpp"
+
+#include <gtest/gtest.h>
+
+#include "dynamap/planning/AStar.hpp"
+
+namespace dynamap::planning {
+namespace {
+
+constexpr double kRes = 0.05;
+
+// Two known rooms joined by a 0.9 m doorway in a wall along y = 40; on the far side, the
+// floor in the shadow of the east door post was never seen (a 0.6 x 0.3 m unknown patch
+// reaching 0.3 m into the doorway's width).
+GridMap Doorway() {
+  GridMap map(80, 80, kRes, CellState::kNavigable);
+  for (int x = 0; x < 80; ++x) {
+    if (x < 31 || x >= 49) map.Set({x, 40}, CellState::kObstacle);  // Gap: cells 31..48.
+  }
+  for (int y = 41; y < 47; ++y) {
+    for (int x = 43; x < 55; ++x) map.Set({x, y}, CellState::kUnknown);
+  }
+  return map;
+}
+
+TEST(BuildTraversalGrid, UnseenFloorBesideADoorPostDoesNotCloseTheDoorway) {
+  const TraversalGrid grid = BuildTraversalGrid(Doorway(), CostFieldConfig{});
+  EXPECT_TRUE(AStarSearch(grid, {40, 20}, {40, 60}).found);
+  // The unknown patch itself and a band of unknown_radius_m around it stay blocked.
+  EXPECT_TRUE(grid.Blocked(GridIndex{50, 43}));
+  EXPECT_TRUE(grid.Blocked(GridIndex{41, 43}));
+  EXPECT_FALSE(grid.Blocked(GridIndex{38, 43}));
+}
+
+TEST(BuildTraversalGrid, InflatingUnknownLikeObstaclesWouldCloseIt) {
+  CostFieldConfig config;
+  config.unknown_radius_m = config.robot_radius_m;
+  EXPECT_FALSE(AStarSearch(BuildTraversalGrid(Doorway(), config), {40, 20}, {40, 60}).found);
+}
+
+TEST(BuildTraversalGrid, ObstaclesInflateByTheRobotRadiusWithAPenaltyBeyond) {
+  const CostFieldConfig config;
+  const TraversalGrid grid = BuildTraversalGrid(Doorway(), config);
+  EXPECT_TRUE(grid.Blocked(GridIndex{20, 34}));   // 0.30 m from the wall.
+  EXPECT_FALSE(grid.Blocked(GridIndex{20, 32}));  // 0.40 m: free, but penalised.
+  EXPECT_GT(grid.penalty[grid.Index({20, 32})], 0.0);
+  EXPECT_EQ(grid.penalty[grid.Index({20, 10})], 0.0);  // 1.5 m away.
+}
+
+}  // namespace
+}  // namespace dynamap::planning

@@ -1,0 +1,63 @@
+#include "dynamap/planning/FloorGaps.hpp"
+
+#include <gtest/gtest.h>
+
+namespace dynamap::planning {
+namespace {
+
+constexpr double kRes = 0.05;
+
+int Count(const GridMap& map, CellState state) {
+  int n = 0;
+  for (const CellState s : map.cells) n += s == state ? 1 : 0;
+  return n;
+}
+
+// A 2 x 2 m floor patch in the middle of an unknown 4 x 4 m grid.
+GridMap Patch() {
+  GridMap map(80, 80, kRes);
+  for (int y = 20; y < 60; ++y) {
+    for (int x = 20; x < 60; ++x) map.Set({x, y}, CellState::kNavigable);
+  }
+  return map;
+}
+
+TEST(CloseFloorGaps, FillsGrazingRayStripesInsideSeenFloor) {
+  GridMap map = Patch();
+  for (int y = 22; y < 58; y += 4) {
+    for (int x = 20; x < 60; ++x) map.Set({x, y}, CellState::kUnknown);  // 1-cell stripes.
+  }
+  for (int x = 30; x < 60; x += 3) map.Set({x, 41}, CellState::kUnknown);  // Speckles.
+  const GridMap clean = Patch();
+  EXPECT_GT(CloseFloorGaps(map, 0.15), 0);
+  EXPECT_EQ(map.cells, clean.cells);
+}
+
+TEST(CloseFloorGaps, TheSeenFloorsOuterEdgeDoesNotGrow) {
+  GridMap map = Patch();
+  EXPECT_EQ(CloseFloorGaps(map, 0.2), 0);
+  EXPECT_EQ(Count(map, CellState::kNavigable), 40 * 40);
+}
+
+TEST(CloseFloorGaps, KeepsObstaclesHolesAndGapsWiderThanAsked) {
+  GridMap map = Patch();
+  for (int y = 20; y < 60; ++y) {
+    map.Set({30, y}, CellState::kObstacle);  // A wall across the floor.
+    map.Set({40, y}, CellState::kHole);      // A one-cell trench.
+    for (int x = 48; x < 54; ++x) map.Set({x, y}, CellState::kUnknown);  // 0.3 m unseen.
+  }
+  EXPECT_EQ(CloseFloorGaps(map, 0.15), 0);
+  EXPECT_EQ(Count(map, CellState::kObstacle), 40);
+  EXPECT_EQ(Count(map, CellState::kHole), 40);
+  EXPECT_EQ(map.At({50, 30}), CellState::kUnknown);
+}
+
+TEST(CloseFloorGaps, NothingToDoForAZeroGap) {
+  GridMap map = Patch();
+  map.Set({30, 30}, CellState::kUnknown);
+  EXPECT_EQ(CloseFloorGaps(map, 0.0), 0);
+  EXPECT_EQ(map.At({30, 30}), CellState::kUnknown);
+}
+
+}  // namespace
+}  // namespace dynamap::planning

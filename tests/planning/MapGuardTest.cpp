@@ -1,0 +1,41 @@
+#include "dynamap/planning/MapGuard.hpp"
+
+#include <gtest/gtest.h>
+
+namespace dynamap::planning {
+namespace {
+
+// A 4 x 4 m map with a door post: one obstacle cell whose square spans x, y in [2.0, 2.05).
+GridMap PostMap() {
+  GridMap map(80, 80, 0.05, CellState::kNavigable);
+  map.Set({40, 40}, CellState::kObstacle);
+  return map;
+}
+
+TEST(DistanceToKnownObstacle, MeasuresToTheNearestCellEdge) {
+  const GridMap map = PostMap();
+  EXPECT_NEAR(DistanceToKnownObstacle(map, 1.5, 2.025, 1.0), 0.5, 1e-9);
+  EXPECT_NEAR(DistanceToKnownObstacle(map, 2.025, 2.025, 1.0), 0.0, 1e-9);
+  EXPECT_NEAR(DistanceToKnownObstacle(map, 0.5, 2.025, 1.0), 1.0, 1e-9);  // Beyond the search.
+}
+
+TEST(DrivesIntoKnownObstacle, RefusesForwardMotionThatBringsThePostIntoTheFootprint) {
+  const GridMap map = PostMap();
+  // The post 0.38 m ahead of a 0.36 m footprint: 0.1 m/s for 0.5 s brings it to 0.33 m.
+  const robotio::Pose2D facing_post{1.62, 2.025, 0.0};
+  EXPECT_TRUE(DrivesIntoKnownObstacle(map, facing_post, {0, 0.1, 0.0}, 0.36, 0.5));
+  // Backing away, turning in place or passing with room to spare is fine.
+  EXPECT_FALSE(DrivesIntoKnownObstacle(map, facing_post, {0, -0.1, 0.0}, 0.36, 0.5));
+  EXPECT_FALSE(DrivesIntoKnownObstacle(map, facing_post, {0, 0.0, 1.0}, 0.36, 0.5));
+  const robotio::Pose2D passing{1.62, 1.5, 0.0};
+  EXPECT_FALSE(DrivesIntoKnownObstacle(map, passing, {0, 0.1, 0.0}, 0.36, 0.5));
+}
+
+TEST(DrivesIntoKnownObstacle, LetsTheRobotLeaveWhenItIsAlreadyTooClose) {
+  const GridMap map = PostMap();
+  const robotio::Pose2D too_close{1.75, 2.025, M_PI};  // 0.25 m from the post, facing away.
+  EXPECT_FALSE(DrivesIntoKnownObstacle(map, too_close, {0, 0.1, 0.0}, 0.36, 0.5));
+}
+
+}  // namespace
+}  // namespace dynamap::planning

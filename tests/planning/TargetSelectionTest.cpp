@@ -1,0 +1,78 @@
+#include "dynamap/planning/TargetSelection.hpp"
+
+#include <gtest/gtest.h>
+
+namespace dynamap::planning {
+namespace {
+
+TargetCandidate Candidate(TargetKind kind, GridIndex viewpoint, double score) {
+  TargetCandidate c;
+  c.kind = kind;
+  c.viewpoint = viewpoint;
+  c.region_center = viewpoint;
+  c.score = score;
+  return c;
+}
+
+const GridMap kMap(100, 100, 0.05);
+const GridIndex kRobot{50, 50};
+
+TEST(SelectTarget, WithoutACurrentTargetTakesTheBestScore) {
+  const auto s = SelectTarget({Candidate(TargetKind::kFrontier, {80, 50}, 1.0),
+                               Candidate(TargetKind::kInspection, {20, 50}, 2.0)},
+                              std::nullopt, kMap, kRobot, {});
+  ASSERT_TRUE(s.chosen);
+  EXPECT_EQ(s.chosen->kind, TargetKind::kInspection);
+  EXPECT_FALSE(s.kept_current);
+}
+
+TEST(SelectTarget, KeepsTheCurrentTargetAgainstASlightlyBetterOne) {
+  const TargetCandidate current = Candidate(TargetKind::kFrontier, {80, 50}, 1.0);
+  // Re-scored this plan: its viewpoint moved by two cells, and the other side now wins a bit.
+  const auto s = SelectTarget({Candidate(TargetKind::kFrontier, {82, 51}, 1.1),
+                               Candidate(TargetKind::kInspection, {20, 50}, 1.4)},
+                              current, kMap, kRobot, {});
+  ASSERT_TRUE(s.chosen);
+  EXPECT_TRUE(s.kept_current);
+  EXPECT_EQ(s.chosen->kind, TargetKind::kFrontier);
+  EXPECT_EQ(s.chosen->viewpoint, (GridIndex{80, 50}));  // The goal cell does not creep.
+  EXPECT_DOUBLE_EQ(s.chosen->score, 1.1);
+}
+
+TEST(SelectTarget, SwitchesWhenAnotherScoresClearlyBetter) {
+  const TargetCandidate current = Candidate(TargetKind::kFrontier, {80, 50}, 1.0);
+  const auto s = SelectTarget({Candidate(TargetKind::kFrontier, {80, 50}, 1.0),
+                               Candidate(TargetKind::kInspection, {20, 50}, 1.6)},
+                              current, kMap, kRobot, {});
+  ASSERT_TRUE(s.chosen);
+  EXPECT_FALSE(s.kept_current);
+  EXPECT_EQ(s.chosen->kind, TargetKind::kInspection);
+}
+
+TEST(SelectTarget, SwitchesWhenTheCurrentTargetIsGone) {
+  const TargetCandidate current = Candidate(TargetKind::kFrontier, {80, 50}, 5.0);
+  const auto s = SelectTarget({Candidate(TargetKind::kFrontier, {80, 80}, 0.5),
+                               Candidate(TargetKind::kInspection, {81, 50}, 0.4)},
+                              current, kMap, kRobot, {});
+  ASSERT_TRUE(s.chosen);
+  EXPECT_FALSE(s.kept_current);  // Another kind at the same place is another target.
+  EXPECT_EQ(s.chosen->viewpoint, (GridIndex{80, 80}));
+}
+
+TEST(SelectTarget, NeverChoosesAViewpointAtTheRobotsFeet) {
+  const auto s = SelectTarget({Candidate(TargetKind::kFrontier, {51, 50}, 9.0),
+                               Candidate(TargetKind::kFrontier, {70, 50}, 1.0)},
+                              std::nullopt, kMap, kRobot, {});
+  ASSERT_TRUE(s.chosen);
+  EXPECT_EQ(s.chosen->viewpoint, (GridIndex{70, 50}));
+  ASSERT_EQ(s.too_near.size(), 1u);
+  EXPECT_EQ(s.too_near[0].viewpoint, (GridIndex{51, 50}));
+
+  const auto none = SelectTarget({Candidate(TargetKind::kFrontier, {51, 50}, 9.0)},
+                                 std::nullopt, kMap, kRobot, {});
+  EXPECT_FALSE(none.chosen);
+  EXPECT_EQ(none.too_near.size(), 1u);
+}
+
+}  // namespace
+}  // namespace dynamap::planning
