@@ -1,6 +1,7 @@
 #include "dynamap/app/runtime/ControlWorker.hpp"
 
 #include "dynamap/planning/CostField.hpp"
+#include "dynamap/planning/MapGuard.hpp"
 #include "dynamap/robotio/Time.hpp"
 
 namespace dynamap::app::runtime {
@@ -58,6 +59,14 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
     }
   }
   planning::FollowerOutput out = follower_.Step(pose, clearance, dt_s);
+  // The Kinects see nothing within 0.5 m or beside the base: door posts passing out of view
+  // are checked on the map instead.
+  if (plan->value.map &&
+      planning::DrivesIntoKnownObstacle(*plan->value.map, pose, out.command,
+                                        config_.guard.footprint_radius_m, config_.map_guard_s)) {
+    out.command.v = 0.0;
+    ++mediator_.counters.map_guard_stops;
+  }
   out.command.stamp_ns = now_ns;
   return out.command;
 }

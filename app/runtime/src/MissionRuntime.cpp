@@ -20,6 +20,7 @@
 #include "dynamap/mapping/MapExport.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
 #include "dynamap/mapping/TrajectoryEvaluation.hpp"
+#include "dynamap/robotio/FloorBlindZone.hpp"
 #include "dynamap/robotio/RecordingWriter.hpp"
 #include "dynamap/robotio/Time.hpp"
 #include "dynamap/robotio/sim/RobotConfig.hpp"
@@ -130,6 +131,11 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(Missio
   PlanningWorkerConfig planning;
   planning.planning = config.planning;
   planning.known_floor_radius_m = config.known_floor_radius_m;
+  // The ring the Kinects cannot see, plus the widest floor gap the planner closes anyway.
+  planning.start_floor_radius_m =
+      std::max(config.known_floor_radius_m,
+               robotio::FloorBlindRadius(*rig) + config.planning.projection.max_floor_gap_m);
+  spdlog::debug("floor assumed within {:.2f} m of the start", planning.start_floor_radius_m);
   planning.resolution_m = config.mapping.resolution_m;
   runtime->planning_ = std::make_unique<PlanningWorker>(*runtime->mediator_, planning);
 

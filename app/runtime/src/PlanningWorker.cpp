@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "dynamap/planning/CostField.hpp"
+#include "dynamap/planning/FloorGaps.hpp"
 #include "dynamap/planning/PathShortening.hpp"
+#include "dynamap/planning/TargetSelection.hpp"
 #include "dynamap/robotio/Time.hpp"
 
 namespace dynamap::app::runtime {
@@ -42,6 +44,8 @@ PlanningWorker::PlanningWorker(Mediator& mediator, PlanningWorkerConfig config)
 planning::GridMap PlanningWorker::PrepareGrid(const planning::GridMap& seen,
                                               const robotio::Pose2D& pose) const {
   planning::GridMap grid = seen;
+  planning::CloseFloorGaps(grid, config_.planning.projection.max_floor_gap_m);
+  ClearAround(grid, robotio::Pose2D{}, config_.start_floor_radius_m);
   for (const robotio::Pose2D& p : mediator_.Trail()) {
     ClearAround(grid, p, config_.known_floor_radius_m);
   }
@@ -92,29 +96,28 @@ void PlanningWorker::PlanOnce(double now_s) {
   if (decision.kind == planning::TargetKind::kReturnToStart) {
     mediator_.counters.exploration_done = true;
   }
-  // A viewpoint at the robot's feet resolves nothing it has not already seen from here:
-  // take the best-scored candidate further away instead, and count the near one as failed.
-  const double near_m = 2.0 * config_.planning.follower.goal_tolerance_m + grid.resolution_m;
-  const auto distance_to = [&](planning::GridIndex c) {
-    return std::hypot(grid.CenterX(c.x) - pose.x, grid.CenterY(c.y) - pose.y);
-  };
+  // Keep the current target unless another is clearly better; never one at the robot's
+  // feet (counted as failed, so an unresolvable one ends up blacklisted).
   planning::GridIndex goal_cell = decision.cell;
-  planning::TargetCandidate chosen = decision.chosen;
-  if (decision.kind != planning::TargetKind::kReturnToStart &&
-      distance_to(decision.cell) <= near_m) {
-    targets_.ReportFailure(decision.chosen, now_s);
-    const planning::TargetCandidate* best = nullptr;
-    for (const auto& candidate : decision.candidates) {
-      if (distance_to(candidate.viewpoint) > near_m && std::isfinite(candidate.score) &&
-          (best == nullptr || candidate.score > best->score)) {
-        best = &candidate;
-      }
+  if (decision.kind != planning::TargetKind::kReturnToStart) {
+    planning::TargetSelectionConfig selection_config;
+    selection_config.near_m =
+        2.0 * config_.planning.follower.goal_tolerance_m + grid.resolution_m;
+    const planning::TargetSelection selection = planning::SelectTarget(
+        decision.candidates, current_target_, grid, robot, selection_config);
+    for (const auto& near : selection.too_near) targets_.ReportFailure(near, now_s);
+    if (!selection.chosen) {
+      spdlog::debug("t {:.1f} s: all {} candidates at the robot's feet", now_s,
+                    selection.too_near.size());
+      current_target_.reset();
+      mediator_.plan.Set(plan);  // Nothing to drive to this time: stand still.
+      return;
     }
-    if (best != nullptr) {
-      goal_cell = best->viewpoint;
-      chosen = *best;
-      plan.kind = best->kind;
-    }
+    current_target_ = selection.chosen;
+    goal_cell = selection.chosen->viewpoint;
+    plan.kind = selection.chosen->kind;
+  } else {
+    current_target_.reset();
   }
   if (!search_) {
     search_ = std::make_unique<planning::PathPlanner>(config_.planning.planner, traversal);
@@ -124,15 +127,18 @@ void PlanningWorker::PlanOnce(double now_s) {
   search_->MoveStart(robot);
   if (goal_cell != goal_) {
     goal_ = goal_cell;
-    goal_target_ = chosen;
+    goal_target_ = current_target_.value_or(decision.chosen);
     goal_since_s_ = now_s;
     search_->SetGoal(goal_);
   }
   const planning::GridPath path = search_->Plan();
   if (!path.found) {
+    spdlog::debug("t {:.1f} s: no path from ({}, {}) to ({}, {})", now_s, robot.x, robot.y,
+                  goal_.x, goal_.y);
     targets_.ReportUnreachable(goal_target_, now_s);
     ++mediator_.counters.unreachable_targets;
     goal_ = {-1, -1};
+    current_target_.reset();
   } else if (now_s - goal_since_s_ > config_.target_timeout_s) {
     targets_.ReportFailure(goal_target_, now_s);
     goal_since_s_ = now_s;

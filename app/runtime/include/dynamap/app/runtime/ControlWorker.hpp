@@ -18,6 +18,7 @@ struct ControlWorkerConfig {
   double look_around_yaw_rate = 0.5;      // rad/s of the first look around.
   double initial_turn_rad = 6.3;          // rad turned in place before following plans.
   double recovery_s = 1.0;                // s of the guard's recovery motion after a stop.
+  double map_guard_s = 0.5;               // s ahead the map guard checks the footprint.
   planning::PathFollowerConfig follower;
   planning::CollisionGuardConfig guard;
   planning::CostFieldConfig cost;         // To read clearance off the planner's cost grid.

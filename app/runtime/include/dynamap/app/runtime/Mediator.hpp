@@ -55,6 +55,7 @@ struct MissionCounters {
   std::atomic<std::int64_t> registrations_rejected{0};
   std::atomic<std::int64_t> collisions{0};
   std::atomic<std::int64_t> guard_stops{0};
+  std::atomic<std::int64_t> map_guard_stops{0};  // Control steps the map guard held back.
   std::atomic<std::int64_t> plans{0};
   std::atomic<std::int64_t> unreachable_targets{0};
   // Simulated time up to which each worker has finished its work (lockstep pacing).

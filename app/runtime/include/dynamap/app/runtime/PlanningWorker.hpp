@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "dynamap/app/runtime/Mediator.hpp"
@@ -19,6 +20,10 @@ namespace dynamap::app::runtime {
 struct PlanningWorkerConfig {
   planning::PlanningConfig planning;
   double known_floor_radius_m = 0.8;  // m around visited poses: unseen floor is drivable.
+  // m around the start: the operator puts the robot down on clear floor, and the Kinects
+  // never see the ring just beyond the robot (robotio::FloorBlindRadius), not even turning
+  // in place; without this the start would be an island among unknown cells.
+  double start_floor_radius_m = 1.3;
   double target_timeout_s = 60.0;     // s without reaching a goal before it counts as failed.
   double resolution_m = 0.05;         // m, cell edge of the projected map.
 };
@@ -46,6 +51,7 @@ class PlanningWorker {
   std::unique_ptr<planning::PathPlanner> search_;  // D* Lite (or A*), kept across plans.
   planning::GridIndex goal_{-1, -1};
   planning::TargetCandidate goal_target_;  // What the goal was chosen for (blacklisting).
+  std::optional<planning::TargetCandidate> current_target_;  // Kept across re-plans.
   double goal_since_s_ = 0.0;
   std::vector<double> plan_ms_;
 };
