@@ -12,8 +12,10 @@ double Clamp(double v, double lo, double hi) { return std::min(hi, std::max(lo, 
 
 }  // namespace
 
-void PathFollower::SetPath(std::vector<Eigen::Vector2d> waypoints) {
+void PathFollower::SetPath(std::vector<Eigen::Vector2d> waypoints,
+                           std::optional<Eigen::Vector2d> look_at) {
   path_ = std::move(waypoints);
+  look_at_ = look_at;
   segment_ = 0;
 }
 
@@ -21,6 +23,23 @@ FollowerOutput PathFollower::Step(const robotio::Pose2D& pose, double clearance_
   FollowerOutput out;
   const Eigen::Vector2d p(pose.x, pose.y);
   if (path_.empty() || (p - path_.back()).norm() <= config_.goal_tolerance_m) {
+    if (!path_.empty() && look_at_ && (*look_at_ - p).norm() > config_.goal_tolerance_m) {
+      const Eigen::Vector2d to = *look_at_ - p;
+      const double error = robotio::WrapAngle(std::atan2(to.y(), to.x()) - pose.theta);
+      if (std::abs(error) > config_.face_tolerance_rad) {
+        double omega = Clamp(config_.heading_gain * error, -config_.max_yaw_rate_radps,
+                             config_.max_yaw_rate_radps);
+        if (dt_s > 0.0) {
+          omega = Clamp(omega, last_.omega - config_.max_yaw_accel_radps2 * dt_s,
+                        last_.omega + config_.max_yaw_accel_radps2 * dt_s);
+        }
+        out.command.omega = omega;
+        out.facing = true;
+        last_ = out.command;
+        return out;
+      }
+    }
+    look_at_.reset();
     out.goal_reached = !path_.empty();
     last_ = {};
     return out;

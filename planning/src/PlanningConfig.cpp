@@ -12,6 +12,7 @@ void ReadProjection(robotio::ConfigNode& n, ProjectionConfig* c) {
   n.Read("floor_band_m", &c->floor_band_m, 0.0, 0.5);
   n.Read("hole_depth_m", &c->hole_depth_m, 0.0, 3.0);
   n.Read("max_floor_gap_m", &c->max_floor_gap_m, 0.0, 1.0);
+  n.Read("dynamic_obstacle_ttl_s", &c->dynamic_obstacle_ttl_s, 0.0, 3600.0);
 }
 
 void ReadCost(robotio::ConfigNode& n, CostFieldConfig* c) {
@@ -27,6 +28,7 @@ void ReadTargets(robotio::ConfigNode& n, TargetPlannerConfig* c) {
   n.Read("min_frontier_length_m", &c->min_frontier_length_m, 0.0, 10.0);
   n.Read("sensor_range_m", &c->sensor_range_m, 0.5, 20.0);
   n.Read("viewpoint_radius_m", &c->viewpoint_radius_m, 0.0, 10.0);
+  n.Read("min_view_distance_m", &c->min_view_distance_m, 0.0, 10.0);
   n.Read("min_gain_m2", &c->min_gain_m2, 0.0, kHuge);
   n.Read("path_cost_offset_m", &c->path_cost_offset_m, 0.01, kHuge);
   n.Read("inspection", &c->inspection);

@@ -75,21 +75,23 @@ bool ClearSight(const GridMap& map, GridIndex a, GridIndex b) {
   return true;
 }
 
-// The reachable cell within `radius` of `center` that sees it and is cheapest to reach.
+// The reachable cell between `min_cells` and `max_cells` from `center` that sees it and is
+// cheapest to reach.
 struct Viewpoint {
   bool found = false;
   GridIndex cell;
   double cost = kInfinity;
 };
 Viewpoint FindViewpoint(const GridMap& map, const std::vector<double>& cost_to_go,
-                        GridIndex center, double radius_cells) {
+                        GridIndex center, double min_cells, double max_cells) {
   Viewpoint best;
-  const int r = static_cast<int>(std::ceil(radius_cells));
+  const int r = static_cast<int>(std::ceil(max_cells));
   for (int y = std::max(0, center.y - r); y <= std::min(map.height - 1, center.y + r); ++y) {
     for (int x = std::max(0, center.x - r); x <= std::min(map.width - 1, center.x + r); ++x) {
       const double dx = x - center.x;
       const double dy = y - center.y;
-      if (dx * dx + dy * dy > radius_cells * radius_cells) continue;
+      const double d2 = dx * dx + dy * dy;
+      if (d2 > max_cells * max_cells || d2 < min_cells * min_cells) continue;
       const double c = cost_to_go[static_cast<std::size_t>(y) * map.width + x];
       if (c >= best.cost) continue;
       const GridIndex cell{x, y};
@@ -155,13 +157,20 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
   const int min_frontier = std::max(1, static_cast<int>(std::ceil(config_.min_frontier_length_m / res)));
   ViewCone cone;
   cone.range_m = config_.sensor_range_m;
+  cone.min_range_m = config_.min_view_distance_m;
   for (const Region& region : Regions(map, frontier, min_frontier, &decision.frontier_regions)) {
     if (blacklist_.IsBlacklisted(region.center, now_s)) {
       ++decision.blacklisted_regions;
       continue;
     }
-    const Viewpoint vp =
-        FindViewpoint(map, cost_to_go, region.center, config_.viewpoint_radius_m / res);
+    // Far enough to see the unseen floor beyond the frontier; nearer only where there is
+    // no such place (a narrow dead end).
+    const double min_view = config_.min_view_distance_m / res;
+    Viewpoint vp = FindViewpoint(map, cost_to_go, region.center, min_view,
+                                 min_view + config_.viewpoint_radius_m / res);
+    if (!vp.found && min_view > 0.0) {
+      vp = FindViewpoint(map, cost_to_go, region.center, 0.0, config_.viewpoint_radius_m / res);
+    }
     if (!vp.found) {
       ++decision.unreachable_regions;
       continue;
@@ -202,7 +211,7 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
         continue;
       }
       // Well inside the inspection distance, so the surface counts once seen from there.
-      const Viewpoint vp = FindViewpoint(map, cost_to_go, region.center, 0.8 * inspect_cells);
+      const Viewpoint vp = FindViewpoint(map, cost_to_go, region.center, 0.0, 0.8 * inspect_cells);
       if (!vp.found) continue;
       TargetCandidate c;
       c.kind = TargetKind::kInspection;

@@ -18,6 +18,9 @@ TargetSelection SelectTarget(const std::vector<TargetCandidate>& candidates,
   TargetSelection selection;
   const TargetCandidate* best = nullptr;
   const TargetCandidate* same = nullptr;
+  // A current target whose viewpoint the robot has reached is done, not kept.
+  const bool current_open =
+      current && DistanceM(map, current->viewpoint, robot) > config.near_m;
   for (const TargetCandidate& c : candidates) {
     if (!std::isfinite(c.score)) continue;
     if (DistanceM(map, c.viewpoint, robot) <= config.near_m) {
@@ -25,7 +28,7 @@ TargetSelection SelectTarget(const std::vector<TargetCandidate>& candidates,
       continue;
     }
     if (best == nullptr || c.score > best->score) best = &c;
-    if (current && c.kind == current->kind &&
+    if (current_open && c.kind == current->kind &&
         DistanceM(map, c.viewpoint, current->viewpoint) <= config.same_target_m &&
         (same == nullptr || DistanceM(map, c.viewpoint, current->viewpoint) <
                                 DistanceM(map, same->viewpoint, current->viewpoint))) {

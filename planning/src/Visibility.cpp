@@ -10,6 +10,7 @@ std::vector<int> VisibleCells(const GridMap& map, GridIndex from, const ViewCone
   std::vector<int> seen;
   if (!map.Contains(from) || cone.rays <= 0) return seen;
   const double range = cone.range_m / map.resolution_m;
+  const double min_range = cone.min_range_m / map.resolution_m;
   const bool full_circle = cone.fov_rad >= 2.0 * M_PI - 1e-9;
   const int rays = cone.rays;
   const double step_angle = full_circle ? 2.0 * M_PI / rays : cone.fov_rad / std::max(1, rays - 1);
@@ -31,7 +32,7 @@ std::vector<int> VisibleCells(const GridMap& map, GridIndex from, const ViewCone
       const GridIndex c{static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y))};
       if (!map.Contains(c)) break;
       std::uint8_t& m = marked[static_cast<std::size_t>(c.y - from.y + r) * side + (c.x - from.x + r)];
-      if (m == 0) {
+      if (m == 0 && t >= min_range) {
         m = 1;
         seen.push_back(map.Index(c));
       }

@@ -59,5 +59,32 @@ TEST(CloseFloorGaps, NothingToDoForAZeroGap) {
   EXPECT_EQ(map.At({30, 30}), CellState::kUnknown);
 }
 
+TEST(CloseWallGaps, ClosesMissedCellsInAWallButNotADoorway) {
+  GridMap map(40, 20, 0.05, CellState::kNavigable);
+  for (int x = 0; x < 40; ++x) map.Set({x, 10}, CellState::kObstacle);
+  for (int x = 0; x < 40; ++x) map.Set({x, 11}, CellState::kUnknown);  // Behind the wall.
+  map.Set({5, 10}, CellState::kUnknown);                                 // Missed cells.
+  map.Set({6, 10}, CellState::kUnknown);
+  for (int x = 20; x < 38; ++x) map.Set({x, 10}, CellState::kUnknown);   // A 0.9 m doorway.
+  EXPECT_EQ(CloseWallGaps(map, 0.15), 2);
+  EXPECT_EQ(map.At({5, 10}), CellState::kObstacle);
+  EXPECT_EQ(map.At({6, 10}), CellState::kObstacle);
+  EXPECT_EQ(map.At({28, 10}), CellState::kUnknown);
+}
+
+TEST(AssumeFloorAround, StopsAtWallsAndHoles) {
+  // The robot 0.3 m from a wall; beyond the wall unknown space must stay unknown.
+  GridMap map(40, 40, 0.05, CellState::kUnknown);
+  for (int y = 0; y < 40; ++y) map.Set({26, y}, CellState::kObstacle);
+  map.Set({15, 20}, CellState::kHole);
+  const int filled = AssumeFloorAround(map, 1.0, 1.0, 0.5);  // Cell (20, 20).
+  EXPECT_GT(filled, 0);
+  EXPECT_EQ(map.At({20, 20}), CellState::kNavigable);
+  EXPECT_EQ(map.At({25, 20}), CellState::kNavigable);
+  EXPECT_EQ(map.At({27, 20}), CellState::kUnknown);  // Behind the wall, although within 0.5 m.
+  EXPECT_EQ(map.At({15, 20}), CellState::kHole);
+  EXPECT_EQ(map.At({20, 31}), CellState::kUnknown);  // Beyond the radius.
+}
+
 }  // namespace
 }  // namespace dynamap::planning

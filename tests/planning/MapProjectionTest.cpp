@@ -137,5 +137,35 @@ TEST(MapProjection, UpdateReprojectsOnlyTouchedColumns) {
   EXPECT_EQ(projector.map().At(person_cell), CellState::kNavigable);
 }
 
+TEST(MapProjection, DynamicOnlyObstaclesExpireButStaticOnesStay) {
+  // A person's trace stays in the dynamic map until seen free; for the planner it blocks
+  // only for dynamic_obstacle_ttl_s, then the floor under it is navigable again.
+  BoxWorld world;
+  ProjectionConfig config;
+  config.dynamic_obstacle_ttl_s = 10.0;
+  MapProjector projector(Area(), config);
+  projector.ProjectAll(world);
+  world.dynamic_boxes.push_back(Box(3.0f, 2.0f, 0.0f, 3.4f, 2.4f, 1.8f));  // Person.
+  world.static_boxes.push_back(Box(1.0f, 1.0f, 0.0f, 1.4f, 1.4f, 1.0f));   // Cabinet.
+  std::vector<Eigen::Vector2f> touched{{3.225f, 2.225f}, {1.225f, 1.225f}};
+  const GridIndex person = projector.map().CellAt(3.225, 2.225);
+  const GridIndex cabinet = projector.map().CellAt(1.225, 1.225);
+  (void)projector.Update(world, touched, 100.0);
+  EXPECT_EQ(projector.map().At(person), CellState::kObstacle);
+  EXPECT_TRUE(projector.ExpireDynamicObstacles(world, 105.0).empty());
+  (void)projector.Update(world, touched, 108.0);  // Seen again: still the first sighting.
+  EXPECT_EQ(projector.map().At(person), CellState::kObstacle);
+  const std::vector<int> released = projector.ExpireDynamicObstacles(world, 110.5);
+  ASSERT_EQ(released.size(), 1u);
+  EXPECT_EQ(projector.map().At(person), CellState::kNavigable);
+  EXPECT_EQ(projector.map().At(cabinet), CellState::kObstacle);
+  // Once the trace is seen free and the person steps in again, it blocks afresh.
+  world.dynamic_boxes.clear();
+  (void)projector.Update(world, touched, 120.0);
+  world.dynamic_boxes.push_back(Box(3.0f, 2.0f, 0.0f, 3.4f, 2.4f, 1.8f));
+  (void)projector.Update(world, touched, 121.0);
+  EXPECT_EQ(projector.map().At(person), CellState::kObstacle);
+}
+
 }  // namespace
 }  // namespace dynamap::planning

@@ -69,5 +69,33 @@ TEST(PathFollower, EmptyPathCommandsStandstill) {
   EXPECT_DOUBLE_EQ(out.command.omega, 0.0);
 }
 
+TEST(PathFollower, TurnsInPlaceToFaceTheLookAtPointBeforeReportingTheGoal) {
+  PathFollower follower;
+  const PathFollowerConfig& cfg = follower.config();
+  // Drive 2 m east, then face a point due north of the goal.
+  follower.SetPath({{0.0, 0.0}, {2.0, 0.0}}, Eigen::Vector2d(2.0, 3.0));
+  robotio::Pose2D pose;
+  const double dt = 0.05;
+  bool reached = false;
+  bool faced = false;
+  for (int i = 0; i < 600 && !reached; ++i) {
+    const FollowerOutput out = follower.Step(pose, 1.0, dt);
+    reached = out.goal_reached;
+    if (out.facing) {
+      faced = true;
+      EXPECT_EQ(out.command.v, 0.0);  // Turning on the spot, not driving off the viewpoint.
+    }
+    pose = Drive(pose, out.command, dt);
+  }
+  ASSERT_TRUE(reached);
+  EXPECT_TRUE(faced);
+  EXPECT_LE(std::hypot(pose.x - 2.0, pose.y), cfg.goal_tolerance_m + 0.02);
+  EXPECT_LE(std::abs(robotio::WrapAngle(pose.theta - M_PI / 2)), cfg.face_tolerance_rad + 0.05);
+  // Once faced, the goal stays reached: no second turn.
+  const FollowerOutput again = follower.Step(pose, 1.0, dt);
+  EXPECT_TRUE(again.goal_reached);
+  EXPECT_FALSE(again.facing);
+}
+
 }  // namespace
 }  // namespace dynamap::planning

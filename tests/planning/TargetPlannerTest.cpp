@@ -6,6 +6,7 @@
 
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/TargetPlanner.hpp"
+#include "dynamap/planning/Visibility.hpp"
 
 namespace dynamap::planning {
 namespace {
@@ -141,6 +142,45 @@ TEST(TargetPlanner, InspectionTargetsLeadToEverySurfaceUntilDone) {
   EXPECT_LT(visits, 40);
   EXPECT_EQ(d.kind, TargetKind::kReturnToStart);
   EXPECT_GT(coverage.Fraction(map), 0.9);
+}
+
+TEST(TargetPlanner, FrontierViewpointsKeepTheFloorBlindDistance) {
+  // Unseen floor next to a frontier is visible only from beyond the Kinects' floor blind
+  // radius: with a minimum view distance the viewpoint keeps it, and what is counted as
+  // gain is what lies beyond it.
+  const GridMap map = RoomWithOpenings();
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  TargetPlannerConfig config = NoInspection();
+  config.min_view_distance_m = 1.2;
+  const TargetPlanner planner(config, kRes);
+  const TargetDecision d = planner.Plan(map, grid, {45, 24}, {15, 24}, nullptr, 0.0);
+  ASSERT_FALSE(d.candidates.empty());
+  const TargetPlanner plain(NoInspection(), kRes);
+  const TargetDecision near = plain.Plan(map, grid, {45, 24}, {15, 24}, nullptr, 0.0);
+  for (const TargetCandidate& c : d.candidates) {
+    const double distance = std::hypot(c.viewpoint.x - c.region_center.x,
+                                       c.viewpoint.y - c.region_center.y) * kRes;
+    EXPECT_GE(distance, 1.2 - 1e-9);
+    EXPECT_LE(distance, 1.2 + config.viewpoint_radius_m + 1e-9);
+  }
+  // Without it the robot, 0.5 m from the east opening, would take its own cell.
+  ASSERT_FALSE(near.candidates.empty());
+  EXPECT_LT(std::hypot(near.chosen.viewpoint.x - 45, near.chosen.viewpoint.y - 24) * kRes, 0.5);
+}
+
+TEST(Visibility, CellsNearerThanTheMinimumRangeAreNotSeen) {
+  GridMap map(60, 60, kRes, CellState::kUnknown);
+  ViewCone cone;
+  cone.range_m = 2.0;
+  cone.min_range_m = 1.0;
+  const std::vector<int> seen = VisibleCells(map, {30, 30}, cone);
+  ASSERT_FALSE(seen.empty());
+  for (const int i : seen) {
+    const GridIndex c = map.Cell(i);
+    const double d = std::hypot(c.x - 30, c.y - 30) * kRes;
+    EXPECT_GE(d, 1.0 - 1.5 * kRes);
+    EXPECT_LE(d, 2.0 + 1.5 * kRes);
+  }
 }
 
 }  // namespace

@@ -74,5 +74,17 @@ TEST(SelectTarget, NeverChoosesAViewpointAtTheRobotsFeet) {
   EXPECT_EQ(none.too_near.size(), 1u);
 }
 
+TEST(SelectTarget, AReachedCurrentTargetIsNotKept) {
+  // The robot stands on the current viewpoint; the region moved its viewpoint a little
+  // further off. Keeping the old goal cell would hold the robot where it is for good.
+  const TargetCandidate current = Candidate(TargetKind::kFrontier, {53, 50}, 1.0);
+  const auto s = SelectTarget({Candidate(TargetKind::kFrontier, {58, 50}, 1.0),
+                               Candidate(TargetKind::kInspection, {20, 50}, 1.2)},
+                              current, kMap, kRobot, {});
+  ASSERT_TRUE(s.chosen);
+  EXPECT_FALSE(s.kept_current);
+  EXPECT_EQ(s.chosen->kind, TargetKind::kInspection);
+}
+
 }  // namespace
 }  // namespace dynamap::planning

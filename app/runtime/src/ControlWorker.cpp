@@ -36,7 +36,18 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
     follower_.Stop();
     return {now_ns, 0.0, 0.0};
   }
-  if (now_ns < recovery_until_ns_) return {now_ns, recovery_.v, recovery_.omega};
+  const auto plan = mediator_.plan.Get();
+  if (now_ns < recovery_until_ns_) {
+    robotio::VelocityCommand back{now_ns, recovery_.v, recovery_.omega};
+    // Backing off goes where no Kinect looks: the map says what is behind.
+    if (plan && plan->value.map &&
+        planning::DrivesIntoKnownObstacle(*plan->value.map, pose, back,
+                                          config_.guard.footprint_radius_m, config_.map_guard_s)) {
+      back.v = 0.0;
+      ++mediator_.counters.map_guard_stops;
+    }
+    return back;
+  }
 
   // Look around once before following any plan: the first view is narrow.
   if (turned_rad_ < config_.initial_turn_rad) {
@@ -44,11 +55,10 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
     return {now_ns, 0.0, config_.look_around_yaw_rate};
   }
   mediator_.counters.looked_around = true;
-  const auto plan = mediator_.plan.Get();
   if (!plan) return {now_ns, 0.0, 0.0};
   if (plan->version != plan_version_) {
     plan_version_ = plan->version;
-    follower_.SetPath(plan->value.path_map);
+    follower_.SetPath(plan->value.path_map, plan->value.look_at_map);
   }
   if (!plan->value.has_goal || plan->value.path_map.empty()) return {now_ns, 0.0, 0.0};
   double clearance = config_.guard.footprint_radius_m;

@@ -11,6 +11,7 @@
 #include "dynamap/planning/DualMapView.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
 #include "dynamap/robotio/DepthProjection.hpp"
+#include "dynamap/robotio/Time.hpp"
 
 namespace dynamap::app::runtime {
 
@@ -113,7 +114,10 @@ void MappingWorker::Process(const std::vector<CapturedFrame>& batch) {
 }
 
 void MappingWorker::Reproject() {
-  (void)projector_.Update(planning::DualMapView(map()), touched_);
+  const planning::DualMapView view(map());
+  const double now_s = robotio::NanosToSeconds(mediator_.clock.now_ns());
+  (void)projector_.Update(view, touched_, now_s);
+  (void)projector_.ExpireDynamicObstacles(view, now_s);
   touched_.clear();
   mediator_.grid.Set(std::make_shared<const planning::GridMap>(projector_.map()));
 }

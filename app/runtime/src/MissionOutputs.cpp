@@ -122,6 +122,7 @@ robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra
       {"registrations_accepted", r.registrations_accepted},
       {"registrations_rejected", r.registrations_rejected},
       {"guard_stops", r.guard_stops},
+      {"map_guard_stops", r.map_guard_stops},
       {"plans", r.plans},
       {"planner_median_ms", r.plan_median_ms},
       {"planner_p95_ms", r.plan_p95_ms},

@@ -75,6 +75,12 @@ MissionRuntime::~MissionRuntime() {
 robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(MissionConfig config) {
   auto world = robotio::sim::LoadWorld(config.world_file);
   if (!world) return world.error();
+  if (config.rig_file.empty()) {
+    config.rig_file = std::string(DYNAMAP_RESOURCES_DIR) + "/rigs/two_kinects.yaml";
+  }
+  if (config.robot_file.empty()) {
+    config.robot_file = std::string(DYNAMAP_RESOURCES_DIR) + "/robots/segway_rmp50.yaml";
+  }
   auto rig = robotio::LoadRig(config.rig_file);
   if (!rig) return rig.error();
   auto robot = robotio::sim::LoadRobotConfig(config.robot_file);
@@ -136,6 +142,12 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(Missio
       std::max(config.known_floor_radius_m,
                robotio::FloorBlindRadius(*rig) + config.planning.projection.max_floor_gap_m);
   spdlog::debug("floor assumed within {:.2f} m of the start", planning.start_floor_radius_m);
+  // Frontier viewpoints beyond the blind ring, so the unseen floor there comes into view;
+  // a value set in the planning file wins.
+  if (planning.planning.targets.min_view_distance_m <= 0.0) {
+    planning.planning.targets.min_view_distance_m =
+        robotio::FloorBlindRadius(*rig) + config.planning.projection.max_floor_gap_m;
+  }
   planning.resolution_m = config.mapping.resolution_m;
   runtime->planning_ = std::make_unique<PlanningWorker>(*runtime->mediator_, planning);
 
@@ -150,6 +162,7 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(Missio
 
 void MissionRuntime::Start() {
   if (!mediator_->control.Start()) return;
+  started_ = std::chrono::steady_clock::now();
   threads_.emplace_back([this] {
     driver_->Run();
     mediator_->WakeAll();  // Time limit or stop: everyone leaves.
@@ -180,6 +193,10 @@ void MissionRuntime::Wait() {
     if (t.joinable()) t.join();
   }
   joined_ = true;
+  if (started_ != std::chrono::steady_clock::time_point{}) {
+    wall_time_s_ =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  }
   mediator_->control.MarkFinished();
 }
 
@@ -223,6 +240,7 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   MissionReport r;
   r.completed = m.counters.returned_to_start.load();
   r.mission_time_s = robotio::NanosToSeconds(m.clock.now_ns());
+  r.wall_time_s = wall_time_s_;
   r.collisions = m.counters.collisions.load();
   r.frames_delivered = m.frames.delivered();
   r.frames_dropped = m.frames.dropped();
@@ -230,6 +248,7 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   r.registrations_accepted = m.counters.registrations_accepted.load();
   r.registrations_rejected = m.counters.registrations_rejected.load();
   r.guard_stops = m.counters.guard_stops.load();
+  r.map_guard_stops = m.counters.map_guard_stops.load();
   r.plans = m.counters.plans.load();
   r.plan_median_ms = Percentile(planning_->plan_ms(), 0.5);
   r.plan_p95_ms = Percentile(planning_->plan_ms(), 0.95);

@@ -13,27 +13,6 @@
 
 namespace dynamap::app::runtime {
 
-namespace {
-
-// Marks the cells within `radius_m` of `p` navigable where nothing was seen (the robot
-// stood there, or the floor is too close for the Kinects to see).
-void ClearAround(planning::GridMap& grid, const robotio::Pose2D& p, double radius_m) {
-  const int r = static_cast<int>(std::ceil(radius_m / grid.resolution_m));
-  const planning::GridIndex c = grid.CellAt(p.x, p.y);
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      const planning::GridIndex n{c.x + dx, c.y + dy};
-      if (!grid.Contains(n) || (dx * dx + dy * dy) * grid.resolution_m * grid.resolution_m >
-                                   radius_m * radius_m) {
-        continue;
-      }
-      if (grid.At(n) == planning::CellState::kUnknown) grid.Set(n, planning::CellState::kNavigable);
-    }
-  }
-}
-
-}  // namespace
-
 PlanningWorker::PlanningWorker(Mediator& mediator, PlanningWorkerConfig config)
     : mediator_(mediator),
       config_(std::move(config)),
@@ -45,12 +24,33 @@ planning::GridMap PlanningWorker::PrepareGrid(const planning::GridMap& seen,
                                               const robotio::Pose2D& pose) const {
   planning::GridMap grid = seen;
   planning::CloseFloorGaps(grid, config_.planning.projection.max_floor_gap_m);
-  ClearAround(grid, robotio::Pose2D{}, config_.start_floor_radius_m);
+  planning::CloseWallGaps(grid, config_.planning.projection.max_floor_gap_m);
+  planning::AssumeFloorAround(grid, 0.0, 0.0, config_.start_floor_radius_m);
   for (const robotio::Pose2D& p : mediator_.Trail()) {
-    ClearAround(grid, p, config_.known_floor_radius_m);
+    planning::AssumeFloorAround(grid, p.x, p.y, config_.known_floor_radius_m);
   }
-  ClearAround(grid, pose, config_.known_floor_radius_m);
+  planning::AssumeFloorAround(grid, pose.x, pose.y, config_.known_floor_radius_m);
   return grid;
+}
+
+bool PlanningWorker::FacingCurrentTarget(const planning::GridMap& grid,
+                                         const robotio::Pose2D& pose, double now_s) {
+  if (!current_target_) {
+    arrived_s_.reset();
+    return false;
+  }
+  const planning::GridIndex vp = current_target_->viewpoint;
+  const planning::GridIndex look = current_target_->region_center;
+  const double tolerance = config_.planning.follower.goal_tolerance_m + grid.resolution_m;
+  if (std::hypot(grid.CenterX(vp.x) - pose.x, grid.CenterY(vp.y) - pose.y) > tolerance) {
+    arrived_s_.reset();
+    return false;
+  }
+  if (!arrived_s_) arrived_s_ = now_s;
+  const double error = robotio::WrapAngle(
+      std::atan2(grid.CenterY(look.y) - pose.y, grid.CenterX(look.x) - pose.x) - pose.theta);
+  return std::abs(error) > config_.planning.follower.face_tolerance_rad &&
+         now_s - *arrived_s_ < config_.face_timeout_s;
 }
 
 void PlanningWorker::PlanOnce(double now_s) {
@@ -60,6 +60,7 @@ void PlanningWorker::PlanOnce(double now_s) {
   if (!projected || !projected->value) return;
   const auto start = std::chrono::steady_clock::now();
   const robotio::Pose2D pose = mediator_.CurrentPose();
+  if (FacingCurrentTarget(*projected->value, pose, now_s)) return;
   // The floor assumed around visited places (too close for the Kinects to see) counts as
   // known, so frontiers lie beyond it and never at the robot's own feet.
   obstacles_.Add(mediator_.TakeObstacles(), robotio::Pose2D{}, now_s);
@@ -76,8 +77,9 @@ void PlanningWorker::PlanOnce(double now_s) {
 
   const planning::TargetDecision decision =
       targets_.Plan(grid, traversal, robot, home, &coverage_, now_s);
-  spdlog::debug("t {:.1f} s: {} regions, {} unreachable, {} candidates -> {} ({}, {})", now_s,
-                decision.frontier_regions, decision.unreachable_regions,
+  spdlog::debug("t {:.1f} s: {} regions, {} unreachable, {} blacklisted, {} candidates -> {} ({}, {})",
+                now_s, decision.frontier_regions, decision.unreachable_regions,
+                decision.blacklisted_regions,
                 decision.candidates.size(), planning::TargetKindName(decision.kind),
                 decision.cell.x, decision.cell.y);
   Plan plan;
@@ -143,8 +145,15 @@ void PlanningWorker::PlanOnce(double now_s) {
     targets_.ReportFailure(goal_target_, now_s);
     goal_since_s_ = now_s;
   }
+  spdlog::debug("t {:.1f} s: goal ({}, {}) {}, robot ({}, {}), path {} cells", now_s, goal_.x,
+                goal_.y, path.found ? "reachable" : "unreachable", robot.x, robot.y,
+                path.cells.size());
   if (path.found) {
     plan.has_goal = true;
+    if (current_target_) {
+      const planning::GridIndex look = current_target_->region_center;
+      plan.look_at_map = Eigen::Vector2d(grid.CenterX(look.x), grid.CenterY(look.y));
+    }
     plan.goal_map = {grid.CenterX(goal_.x), grid.CenterY(goal_.y)};
     for (const planning::GridIndex& c : planning::ShortenPath(search_->grid(), path.cells)) {
       plan.path_map.emplace_back(grid.CenterX(c.x), grid.CenterY(c.y));

@@ -14,4 +14,13 @@ namespace dynamap::planning {
 // than the disc). Returns the number of cells filled.
 int CloseFloorGaps(GridMap& map, double max_gap_m);
 
+// The same for obstacles: unknown gaps this narrow in a seen wall (cells its oblique scans
+// missed) become obstacle, so they are neither passages nor frontiers into the wall.
+int CloseWallGaps(GridMap& map, double max_gap_m);
+
+// Marks unknown cells within `radius_m` of (x_m, y_m) navigable where they connect to it
+// (4-connected) without crossing an obstacle or a hole: floor the robot stood on or the
+// operator put it down on, never the far side of a wall. Returns the cells marked.
+int AssumeFloorAround(GridMap& map, double x_m, double y_m, double radius_m);
+
 }  // namespace dynamap::planning

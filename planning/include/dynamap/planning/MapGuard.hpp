@@ -10,14 +10,15 @@
 
 namespace dynamap::planning {
 
-// Distance from `centre` (map frame) to the nearest obstacle cell's edge within
+// Distance from (x_m, y_m) (map frame) to the nearest obstacle cell's centre within
 // `search_m`, or `search_m` when there is none that near.
 [[nodiscard]] double DistanceToKnownObstacle(const GridMap& map, double x_m, double y_m,
                                              double search_m);
 
 // True when driving `command` for `horizon_s` from `pose` would bring the footprint
-// (radius `footprint_m`) into a known obstacle and closer to it than it is now; turning in
-// place is never refused.
+// (radius `footprint_m`) into a known obstacle, heading into it (the distance shrinks by
+// more than 30 % of the distance travelled: passing a door post abeam is allowed); turning
+// in place is never refused.
 [[nodiscard]] bool DrivesIntoKnownObstacle(const GridMap& map, const robotio::Pose2D& pose,
                                            const robotio::VelocityCommand& command,
                                            double footprint_m, double horizon_s);

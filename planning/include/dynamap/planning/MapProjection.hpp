@@ -29,6 +29,16 @@ struct ProjectionConfig {
   double hole_depth_m = 0.3;     // m below the floor band searched for free space (holes).
   double max_floor_gap_m = 0.15; // m, unknown gaps this narrow inside seen floor are floor
                                  // for the planner (CloseFloorGaps); 0 keeps them unknown.
+  double dynamic_obstacle_ttl_s = 10.0;  // s a column blocked only by the dynamic map stays
+                                 // an obstacle: a person's trace stays in the dynamic map
+                                 // until seen free, and one walking to and fro would wall
+                                 // off a room for good. The person actually in the way is
+                                 // the collision guard's. 0 = dynamic obstacles never expire.
+};
+
+struct ColumnProjection {
+  CellState state = CellState::kUnknown;
+  bool dynamic_only = false;  // An obstacle only because of the dynamic map.
 };
 
 // State of the column whose centre is (x_m, y_m) in the map frame. Voxels are sampled at
@@ -37,6 +47,11 @@ struct ProjectionConfig {
 // hole; else floor seen → navigable; else unknown.
 [[nodiscard]] CellState ProjectColumn(const VoxelMapView& view, double x_m, double y_m,
                                       const ProjectionConfig& config);
+// The same, saying whether only the dynamic map made it an obstacle; with
+// `dynamic_obstacles` false the dynamic map blocks nothing.
+[[nodiscard]] ColumnProjection ProjectColumnDetailed(const VoxelMapView& view, double x_m,
+                                                     double y_m, const ProjectionConfig& config,
+                                                     bool dynamic_obstacles = true);
 
 // Holds the projected grid over a fixed area and keeps it up to date.
 class MapProjector {
@@ -47,16 +62,24 @@ class MapProjector {
   // Re-projects every column (a loaded map).
   std::vector<int> ProjectAll(const VoxelMapView& view);
   // Re-projects only the columns containing the given map-frame points (those a map update
-  // touched); returns the indices of cells whose state changed.
-  std::vector<int> Update(const VoxelMapView& view, const std::vector<Eigen::Vector2f>& touched_xy);
+  // touched) at time `now_s`; returns the indices of cells whose state changed.
+  std::vector<int> Update(const VoxelMapView& view, const std::vector<Eigen::Vector2f>& touched_xy,
+                          double now_s = 0.0);
+  // Releases columns blocked only by the dynamic map for longer than the configured time
+  // (to what lies under them); returns the indices of cells whose state changed.
+  std::vector<int> ExpireDynamicObstacles(const VoxelMapView& view, double now_s);
 
   [[nodiscard]] const GridMap& map() const { return map_; }
 
  private:
-  std::vector<int> Reproject(const VoxelMapView& view, const std::vector<int>& cells);
+  std::vector<int> Reproject(const VoxelMapView& view, const std::vector<int>& cells,
+                             double now_s);
 
   GridMap map_;
   ProjectionConfig config_;
+  // Per cell: when it became an obstacle by the dynamic map alone (NaN when it is not).
+  std::vector<double> dynamic_since_s_;
+  std::vector<int> dynamic_cells_;  // Cells with a time in dynamic_since_s_.
 };
 
 }  // namespace dynamap::planning

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "dynamap/robotio/Pose2D.hpp"
@@ -28,11 +29,14 @@ struct PathFollowerConfig {
                                        // in a doorway the robot fits through; the collision
                                        // guard, not the follower, stops for real contact.
   double goal_tolerance_m = 0.15;      // m, goal reached within this distance.
+  double face_tolerance_rad = 0.2;     // rad, at the goal the robot turns in place until it
+                                       // faces the path's look-at point this well.
 };
 
 struct FollowerOutput {
   robotio::VelocityCommand command;  // v, ω (stamp left to the caller).
-  bool goal_reached = false;
+  bool goal_reached = false;          // At the goal (and facing the look-at point, if any).
+  bool facing = false;                // At the goal, turning towards the look-at point.
   double cross_track_m = 0.0;        // m, distance from the path (for monitoring).
 };
 
@@ -40,8 +44,10 @@ class PathFollower {
  public:
   explicit PathFollower(PathFollowerConfig config = {}) : config_(config) {}
 
-  // Waypoints in the map frame (m), e.g. the shortened planner path's cell centres.
-  void SetPath(std::vector<Eigen::Vector2d> waypoints);
+  // Waypoints in the map frame (m), e.g. the shortened planner path's cell centres, and
+  // the point to face once there (what the viewpoint was chosen to see).
+  void SetPath(std::vector<Eigen::Vector2d> waypoints,
+               std::optional<Eigen::Vector2d> look_at = std::nullopt);
   // One control step: `clearance_m` is the free distance from the footprint's edge to the
   // nearest obstacle (cost field), `dt_s` the time since the previous step.
   [[nodiscard]] FollowerOutput Step(const robotio::Pose2D& pose, double clearance_m, double dt_s);
@@ -53,6 +59,7 @@ class PathFollower {
  private:
   PathFollowerConfig config_;
   std::vector<Eigen::Vector2d> path_;
+  std::optional<Eigen::Vector2d> look_at_;  // Cleared once faced.
   std::size_t segment_ = 0;          // Index of the segment the robot was last projected on.
   robotio::VelocityCommand last_;    // Previous command, for the acceleration limits.
 };

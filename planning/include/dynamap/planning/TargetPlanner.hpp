@@ -19,8 +19,13 @@ struct TargetPlannerConfig {
                                          // Yamauchi's closest reachable frontier (baseline).
   double min_frontier_length_m = 0.3;    // m, frontier regions with fewer cells·resolution drop.
   double sensor_range_m = 4.5;           // m, range within which unknown area counts as gain.
-  double viewpoint_radius_m = 1.5;       // m, farthest a frontier viewpoint may be from it.
-  double min_gain_m2 = 0.5;              // m², frontier targets revealing less are not worth it.
+  double viewpoint_radius_m = 1.5;       // m, farthest a frontier viewpoint may be from it,
+                                         // beyond min_view_distance_m.
+  double min_view_distance_m = 0.0;      // m, nearest a frontier viewpoint should be: the
+                                         // unseen side of a frontier is mostly floor, which
+                                         // the Kinects see only beyond their floor blind
+                                         // radius (the runtime sets it from the rig).
+  double min_gain_m2 = 0.2;              // m², frontier targets revealing less are not worth it.
   double path_cost_offset_m = 1.0;       // m added to path cost in score = gain / (cost + offset),
                                          // so targets next to the robot do not win by ~1/0.
   bool inspection = true;                // Also plan inspection targets.

@@ -10,6 +10,8 @@ namespace dynamap::planning {
 
 struct ViewCone {
   double range_m = 4.5;              // m, sensor range.
+  double min_range_m = 0.0;          // m, nearer cells are passed but not counted as seen
+                                     // (the floor just beyond the base is out of view).
   double heading_rad = 0.0;          // rad, centre direction in the map frame.
   double fov_rad = 6.283185307179586;  // rad, full opening angle (2π = all around).
   int rays = 90;                     // Rays over the opening angle.

@@ -6,6 +6,7 @@
 #include <array>
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <mutex>
 #include <vector>
 
@@ -39,6 +40,7 @@ struct Plan {
   bool has_goal = false;
   Eigen::Vector2d goal_map = Eigen::Vector2d::Zero();     // m, map frame.
   std::vector<Eigen::Vector2d> path_map;                  // Shortened waypoints, m.
+  std::optional<Eigen::Vector2d> look_at_map;             // What to face at the goal, m.
   std::vector<Eigen::Vector2d> frontier_targets_map;      // Candidate viewpoints, m.
   double plan_ms = 0.0;                                   // Wall time of this plan.
   std::shared_ptr<const planning::GridMap> map;           // Grid the plan was made on.

@@ -3,6 +3,7 @@
 // resume, stop; snapshots for front ends at any time; on the end, every result saved.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <thread>
@@ -66,6 +67,8 @@ class MissionRuntime {
   std::unique_ptr<ControlWorker> control_;
   std::vector<std::thread> threads_;
   bool joined_ = false;
+  std::chrono::steady_clock::time_point started_{};  // Wall clock at Start().
+  double wall_time_s_ = 0.0;                          // Start() to the workers' end.
 };
 
 }  // namespace dynamap::app::runtime

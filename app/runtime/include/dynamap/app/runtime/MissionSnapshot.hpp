@@ -56,6 +56,7 @@ struct MissionReport {
   std::int64_t registrations_accepted = 0;
   std::int64_t registrations_rejected = 0;
   std::int64_t guard_stops = 0;
+  std::int64_t map_guard_stops = 0;  // Control steps the map guard held the base.
   std::int64_t plans = 0;
   double plan_median_ms = 0.0;
   double plan_p95_ms = 0.0;

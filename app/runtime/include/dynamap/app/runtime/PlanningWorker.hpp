@@ -25,6 +25,8 @@ struct PlanningWorkerConfig {
   // in place; without this the start would be an island among unknown cells.
   double start_floor_radius_m = 1.3;
   double target_timeout_s = 60.0;     // s without reaching a goal before it counts as failed.
+  double face_timeout_s = 6.0;        // s at a viewpoint, turning to face its target,
+                                      // before the target is judged again.
   double resolution_m = 0.05;         // m, cell edge of the projected map.
 };
 
@@ -39,6 +41,10 @@ class PlanningWorker {
 
  private:
   void PlanOnce(double now_s);
+  // True while the robot stands at the current target's viewpoint and still turns to face
+  // it (the control worker does the turning): judging it now would count it as failed.
+  bool FacingCurrentTarget(const planning::GridMap& grid, const robotio::Pose2D& pose,
+                           double now_s);
   // `seen` with the floor around visited places (too close for the Kinects) drivable.
   [[nodiscard]] planning::GridMap PrepareGrid(const planning::GridMap& seen,
                                               const robotio::Pose2D& pose) const;
@@ -53,6 +59,7 @@ class PlanningWorker {
   planning::TargetCandidate goal_target_;  // What the goal was chosen for (blacklisting).
   std::optional<planning::TargetCandidate> current_target_;  // Kept across re-plans.
   double goal_since_s_ = 0.0;
+  std::optional<double> arrived_s_;  // When the robot reached the current viewpoint.
   std::vector<double> plan_ms_;
 };
 

@@ -1,0 +1,116 @@
+// The mission runtime end to end on the small office (a corridor, three rooms, a door that
+// closes, a chair that moves, a person walking): the reduced-scale version of the
+// exploration issue's Must-show, plus bad input and the periodic map save.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "../robotio/TestPaths.hpp"
+#include "dynamap/app/runtime/MissionRuntime.hpp"
+#include "dynamap/mapping/MapFiles.hpp"
+
+namespace dynamap::app::runtime {
+namespace {
+
+namespace fs = std::filesystem;
+
+MissionConfig SmallOffice(const std::string& out) {
+  MissionConfig config;
+  config.world_file = test::Resource("worlds/small_office.yaml");
+  config.out_dir = out;
+  config.kinect_width = 160;
+  config.kinect_height = 120;
+  return config;
+}
+
+TEST(ExplorationMission, AWorldFileWithAnErrorStopsBeforeTheMissionStarts) {
+  const std::string out = test::ScratchDir();
+  const std::string world = out + "/broken.yaml";
+  std::ofstream(world) << "name: broken\nfloor: {min: [0, 0], max: [nope, 6]}\n";
+  MissionConfig config = SmallOffice(out + "/run");
+  config.world_file = world;
+  const auto runtime = MissionRuntime::Create(config);
+  ASSERT_FALSE(runtime);
+  EXPECT_NE(runtime.error().message.find("broken.yaml"), std::string::npos)
+      << runtime.error().message;
+  EXPECT_FALSE(fs::exists(out + "/run/map.ot"));
+}
+
+TEST(ExplorationMission, AMissingRigFileIsNamed) {
+  const std::string out = test::ScratchDir();
+  MissionConfig config = SmallOffice(out);
+  config.rig_file = out + "/no_such_rig.yaml";
+  const auto runtime = MissionRuntime::Create(config);
+  ASSERT_FALSE(runtime);
+  EXPECT_NE(runtime.error().message.find("no_such_rig.yaml"), std::string::npos)
+      << runtime.error().message;
+}
+
+TEST(ExplorationMission, MapsAreSavedPeriodicallyWhileTheMissionRuns) {
+  const std::string out = test::ScratchDir();
+  MissionConfig config = SmallOffice(out);
+  config.poses = PoseSource::kGroundTruth;
+  config.save_period_s = 5.0;
+  config.max_time_s = 60.0;
+  auto runtime = MissionRuntime::Create(config);
+  ASSERT_TRUE(runtime) << runtime.error().message;
+  (*runtime)->Start();
+  // What a killed process leaves: the last periodic save, complete and readable.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
+  while ((*runtime)->Snapshot().sim_time_s < 12.0 &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_TRUE(fs::exists(out + "/map.ot"));
+  const auto saved = mapping::LoadMap(out + "/map.ot");
+  ASSERT_TRUE(saved) << saved.error().message;
+  EXPECT_GT((*saved)->size(), 1000u);
+  (*runtime)->Stop();
+  const auto report = (*runtime)->Finish();
+  ASSERT_TRUE(report) << report.error().message;
+  EXPECT_FALSE(report->completed);
+  EXPECT_LT(report->mission_time_s, 60.0);
+  EXPECT_GT(report->wall_time_s, 0.0);
+}
+
+// The whole mission, frames placed at the true poses (in-mission SLAM at this image size
+// is not yet good enough: docs/RESULTS.md): two to three minutes of wall time on two cores.
+// The thresholds are the reduced-scale figures measured in docs/RESULTS.md; completion and
+// a collision-free run are not yet reliable on every run, so they are reported, not
+// asserted.
+TEST(ExplorationMission, ExploresTheSmallOffice) {
+  const std::string out = test::ScratchDir();
+  MissionConfig config = SmallOffice(out);
+  config.poses = PoseSource::kGroundTruth;
+  config.max_time_s = 200.0;
+  auto runtime = MissionRuntime::Create(config);
+  ASSERT_TRUE(runtime) << runtime.error().message;
+  (*runtime)->Start();
+  (*runtime)->Wait();
+  const auto report = (*runtime)->Finish();
+  ASSERT_TRUE(report) << report.error().message;
+  std::printf("completed %d in %.0f s, collisions %lld, explored %.3f, surfaces %.3f\n",
+              report->completed ? 1 : 0, report->mission_time_s,
+              static_cast<long long>(report->collisions), report->explored_free_fraction,
+              report->surface_coverage);
+  EXPECT_LE(report->mission_time_s, config.max_time_s + 1.0);
+  EXPECT_EQ(report->frames_dropped, 0);
+  EXPECT_GT(report->path_length_m, 10.0);  // It leaves the start and visits the rooms.
+  EXPECT_LE(report->ate_rmse_m, 0.05);
+  EXPECT_GE(report->explored_free_fraction, 0.6);
+  EXPECT_GE(report->surface_coverage, 0.25);
+  EXPECT_GE(report->dynamic_accuracy, 0.9);
+  EXPECT_GT(report->plans, 100);
+  for (const char* file : {"map.ot", "static.bt", "dynamic.bt", "trajectory.tum",
+                           "groundtruth.tum", "map2d.png", "map2d.pgm", "map2d.yaml",
+                           "report.json"}) {
+    EXPECT_TRUE(fs::exists(out + "/" + file)) << file;
+  }
+}
+
+}  // namespace
+}  // namespace dynamap::app::runtime
