@@ -125,6 +125,11 @@ void MainWindow::OpenMap(const QString& file) {
   maps_->OpenFile(file);
 }
 
+bool MainWindow::Explore(const ExploreRequest& request) {
+  ShowWorkspace(stack_->indexOf(mission_));
+  return mission_->Explore(request);
+}
+
 QStringList MainWindow::WorkspaceNames() const {
   QStringList names;
   for (int i = 0; i < sidebar_->count(); ++i) names << sidebar_->item(i)->text();

@@ -86,6 +86,13 @@ bool MissionWorkspace::StartMission() {
   return session_->Start(std::move(config));
 }
 
+bool MissionWorkspace::Explore(const ExploreRequest& request) {
+  panel_->SetWorldFile(request.world_file);
+  if (!request.out_dir.isEmpty()) panel_->SetOutputDir(request.out_dir);
+  if (request.max_time_s) panel_->SetTimeLimit(*request.max_time_s);
+  return StartMission();  // What the Start button does.
+}
+
 bool MissionWorkspace::PauseMission() { return session_->Pause(); }
 bool MissionWorkspace::ResumeMission() { return session_->Resume(); }
 bool MissionWorkspace::StopMission() { return session_->Stop(); }

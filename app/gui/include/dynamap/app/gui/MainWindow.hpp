@@ -21,6 +21,7 @@ class CalibrationWorkspace;
 class MapsWorkspace;
 class MissionWorkspace;
 class StatusPanel;
+struct ExploreRequest;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -31,6 +32,8 @@ class MainWindow : public QMainWindow {
 
   // Opens a map in the Maps workspace and switches to it.
   void OpenMap(const QString& file);
+  // Switches to the Mission workspace and starts the mission `request` describes.
+  bool Explore(const ExploreRequest& request);
 
   [[nodiscard]] MapsWorkspace* Maps() const { return maps_; }
   [[nodiscard]] MissionWorkspace* Mission() const { return mission_; }

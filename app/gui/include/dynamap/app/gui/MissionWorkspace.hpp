@@ -13,6 +13,14 @@
 
 namespace dynamap::app::gui {
 
+// A mission to start without the operator (`dynamap gui --explore`); what is left empty
+// keeps the panel's setting.
+struct ExploreRequest {
+  QString world_file;                // selected, and added to the list if not shipped.
+  QString out_dir;                   // results folder; empty: a new one per mission.
+  std::optional<double> max_time_s;  // simulated time limit, s.
+};
+
 class DepthPreview;
 class GridView;
 class MissionOverlay;
@@ -31,6 +39,8 @@ class MissionWorkspace : public QWidget {
   bool PauseMission();
   bool ResumeMission();
   bool StopMission();
+  // Sets the panel up from `request` and presses Start; false when the session refuses.
+  bool Explore(const ExploreRequest& request);
 
   [[nodiscard]] MissionSession* Session() const { return session_; }
   [[nodiscard]] MissionPanel* Panel() const { return panel_; }
