@@ -23,7 +23,10 @@ int main(int argc, char** argv) {
   const dynamap::app::GuiLauncher launch_gui =
       [&argc, argv](const dynamap::app::GuiCommandOptions& options) {
 #ifdef DYNAMAP_WITH_GUI
-        return dynamap::app::gui::RunGui(argc, argv, {options.map_file});
+        return dynamap::app::gui::RunGui(
+            argc, argv,
+            {options.map_file, options.explore_world, options.explore_out,
+             options.explore_max_time_s});
 #else
         (void)options;
         (void)argv;

@@ -11,6 +11,7 @@
 
 #include "dynamap/app/Version.hpp"
 #include "dynamap/app/gui/MainWindow.hpp"
+#include "dynamap/app/gui/MissionWorkspace.hpp"
 
 namespace dynamap::app::gui {
 
@@ -20,6 +21,17 @@ bool DisplayAvailable() {
     if (value != nullptr && value[0] != '\0') return true;
   }
   return false;
+}
+
+void ApplyStartOptions(MainWindow& window, const GuiOptions& options) {
+  if (!options.map_file.empty()) window.OpenMap(QString::fromStdString(options.map_file));
+  if (!options.explore_world.empty()) {
+    ExploreRequest request;
+    request.world_file = QString::fromStdString(options.explore_world);
+    request.out_dir = QString::fromStdString(options.explore_out);
+    if (options.explore_max_time_s > 0.0) request.max_time_s = options.explore_max_time_s;
+    window.Explore(request);  // A refusal or failure shows in the window like a pressed Start.
+  }
 }
 
 int RunGui(int& argc, char** argv, const GuiOptions& options) {
@@ -32,7 +44,7 @@ int RunGui(int& argc, char** argv, const GuiOptions& options) {
     QApplication::setApplicationVersion(QStringLiteral(DYNAMAP_VERSION_STRING));
     MainWindow window;
     window.show();
-    if (!options.map_file.empty()) window.OpenMap(QString::fromStdString(options.map_file));
+    ApplyStartOptions(window, options);
     return QApplication::exec();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "dynamap gui: error: %s\n", e.what());

@@ -6,9 +6,17 @@
 
 namespace dynamap::app::gui {
 
+class MainWindow;
+
 struct GuiOptions {
-  std::string map_file;  // opened in the Maps workspace at start when not empty.
+  std::string map_file;       // opened in the Maps workspace at start when not empty.
+  std::string explore_world;  // when not empty: the Mission workspace starts a mission in it.
+  std::string explore_out;    // results folder of that mission; empty: the workspace's default.
+  double explore_max_time_s = 0.0;  // simulated time limit of that mission, s; 0: the panel's.
 };
+
+// What `options` asks of a shown window at start: open a map or start a mission.
+void ApplyStartOptions(MainWindow& window, const GuiOptions& options);
 
 // True when an X11 or Wayland display is there to open a window on.
 [[nodiscard]] bool DisplayAvailable();
