@@ -1,17 +1,26 @@
 // The main window: which workspaces it offers, shortcuts, menu toggles reaching the Maps
-// workspace, the status bar, recent files and layout kept in QSettings.
+// workspace, the status bar, recent files and layout kept in QSettings, and what
+// `dynamap gui --explore` starts with (or refuses to start with).
 #include <QAction>
+#include <QProcess>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <memory>
+#include <vector>
 
 #include "GuiTestSupport.hpp"
+#include "dynamap/app/gui/GuiLauncher.hpp"
 #include "dynamap/app/gui/MainWindow.hpp"
 #include "dynamap/app/gui/MapControls.hpp"
 #include "dynamap/app/gui/MapsWorkspace.hpp"
+#include "dynamap/app/gui/MissionPanel.hpp"
+#include "dynamap/app/gui/MissionSession.hpp"
+#include "dynamap/app/gui/MissionWorkspace.hpp"
 #include "dynamap/app/gui/RecentFiles.hpp"
+#include "dynamap/app/gui/ResourceFiles.hpp"
 #include "dynamap/app/gui/StatusPanel.hpp"
 
 namespace dynamap::app::gui::test {
@@ -92,6 +101,52 @@ class MainWindowTest : public QObject {
     window.OpenMap(QStringLiteral("/nonexistent/map.ot"));
     QVERIFY(window.Maps()->LastError().contains(QStringLiteral("/nonexistent/map.ot")));
     QVERIFY(window.Recent().Files().isEmpty());
+  }
+
+  void ExploreOptionsRunAMissionInTheMissionWorkspace() {
+    QTemporaryDir dir;
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    MissionSession* session = window.Mission()->Session();
+    std::vector<MissionPhase> phases;
+    connect(session, &MissionSession::PhaseChanged, this,
+            [&phases](MissionPhase phase) { phases.push_back(phase); });
+    window.Mission()->Panel()->SetKinectSize(160, 120);  // Quicker; the mission is the same.
+    const QString world = ResourcePath(QStringLiteral("worlds/small_office.yaml"));
+    GuiOptions options;
+    options.explore_world = world.toStdString();
+    options.explore_out = dir.path().toStdString();
+    options.explore_max_time_s = 1.0;  // The shortest the panel takes.
+
+    ApplyStartOptions(window, options);
+    QCOMPARE(window.CurrentWorkspace(), window.WorkspaceNames().indexOf(QStringLiteral("Mission")));
+    const runtime::MissionConfig config = window.Mission()->Panel()->BuildConfig();
+    QCOMPARE(QString::fromStdString(config.world_file), QFileInfo(world).absoluteFilePath());
+    QCOMPARE(QString::fromStdString(config.out_dir), dir.path());
+    QCOMPARE(config.max_time_s, 1.0);
+    QCOMPARE(session->Phase(), MissionPhase::kStarting);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        session->Phase() == MissionPhase::kFinished || session->Phase() == MissionPhase::kFailed,
+        60000);  // About 10 s on two busy cores.
+    QVERIFY2(session->Phase() == MissionPhase::kFinished, qPrintable(session->LastError()));
+    QVERIFY(std::find(phases.begin(), phases.end(), MissionPhase::kRunning) != phases.end());
+    QVERIFY(session->Report().has_value());
+    QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("report.json"))));
+    QVERIFY(window.isVisible());  // The results stay on screen until the operator closes.
+  }
+
+  void ExploreOfAMissingWorldFailsBeforeAnyWindowOpens() {
+    QProcess dynamap;
+    dynamap.start(QStringLiteral(DYNAMAP_EXECUTABLE),
+                  {QStringLiteral("gui"), QStringLiteral("--explore"),
+                   QStringLiteral("/nonexistent/world.yaml")});
+    QVERIFY(dynamap.waitForFinished(20000));  // A window would keep it running.
+    QCOMPARE(dynamap.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(dynamap.exitCode(), 2);
+    const QString error = QString::fromLocal8Bit(dynamap.readAllStandardError());
+    QVERIFY2(error.startsWith(QStringLiteral("dynamap gui: error: /nonexistent/world.yaml")),
+             qPrintable(error));
   }
 
   void RecentFilesDeduplicateAndCap() {
