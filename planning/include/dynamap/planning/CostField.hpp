@@ -12,10 +12,11 @@
 namespace dynamap::planning {
 
 struct CostFieldConfig {
-  double robot_radius_m = 0.38;     // m, footprint radius (0.36) plus the half cell by which
-                                    // an obstacle cell's centre may lie beyond the surface
-                                    // that made it: cells nearer than this to an obstacle or
-                                    // hole are blocked.
+  double robot_radius_m = 0.36;     // m, the footprint radius: cells nearer than this to an
+                                    // obstacle or hole are blocked. Obstacle cell centres may
+                                    // lie up to half a cell beyond the surface; a larger
+                                    // radius (0.38 m) closed the 0.9 m office doors, and the
+                                    // map guard covers the difference.
   double proximity_range_m = 0.5;   // m beyond the radius over which the penalty decays to 0.
   double proximity_weight = 2.0;    // Penalty at the inflated boundary (relative extra cost).
   bool unknown_is_obstacle = true;  // Unknown cells block (inflated by unknown_radius_m);
