@@ -54,6 +54,12 @@ void Finish(DualOcTree& tree, DualOcTreeNode* node, bool allow_prune) {
   node->updateOccupancyChildren();
 }
 
+bool AnyBit(const std::uint64_t (&a)[8], const std::uint64_t (&b)[8]) {
+  std::uint64_t any = 0;
+  for (int w = 0; w < 8; ++w) any |= a[w] | b[w];
+  return any != 0;
+}
+
 }  // namespace
 
 void ScanIntegrator::PrepareIndex(const octomap::OcTreeKey& min_key,
@@ -171,6 +177,10 @@ void ScanIntegrator::UpdateTree(DualOcTree& tree, const UpdateRules& rules,
 
   for (const std::int32_t slot : order_) {
     const Block& block = blocks_[static_cast<std::size_t>(slot)];
+    // A block holding only the end of a ray cut at max range (no hit, not traversed) has
+    // nothing to update; descending into it would leave a childless node with the prior,
+    // which reads as a pruned, occupied 8x8x8 cube.
+    if (!AnyBit(block.free, block.hit)) continue;
     unsigned common = 0;  // Deepest depth whose node the previous block shares.
     if (previous != nullptr) {
       const std::uint32_t diff = (block.coords[0] ^ previous->coords[0]) |

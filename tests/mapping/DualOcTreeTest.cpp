@@ -168,6 +168,16 @@ TEST(DualOcTreeTest, RaysBeyondMaxRangeClearUpToItWithoutAHit) {
   EXPECT_EQ(map.StaticState({2.52f, 0.02f, 0.02f}), VoxelState::kUnknown);
 }
 
+TEST(DualOcTreeTest, EndOfARayCutAtMaxRangeStaysUnknownAtABlockBoundary) {
+  // The cut end (x in [0.40, 0.45)) is the first voxel of a new 8x8x8 block that no other
+  // voxel of the scan touches: it must not turn into a node (a pruned, occupied cube).
+  DualMap map{ThesisRuleConfig()};
+  map.InsertRays(SingleRay({0.02f, 0.02f, 0.02f}, {0.42f, 0.02f, 0.02f}, false));
+  EXPECT_EQ(map.tree().search(0.42, 0.02, 0.02), nullptr);
+  EXPECT_FALSE(map.IsStaticOccupied({0.47f, 0.22f, 0.32f}));
+  EXPECT_EQ(map.StaticState({0.37f, 0.02f, 0.02f}), VoxelState::kFree);
+}
+
 TEST(DualOcTreeTest, NeverObservedVoxelsAreUnknown) {
   DualMap map{ThesisRuleConfig()};
   EXPECT_EQ(map.StaticState({1, 1, 1}), VoxelState::kUnknown);
