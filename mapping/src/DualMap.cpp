@@ -16,6 +16,7 @@ DualMap::DualMap(const MappingConfig& config)
 DualMap::DualMap(std::unique_ptr<DualOcTree> tree, const MappingConfig& config)
     : config_(config), rules_(UpdateRules::FromConfig(config)), tree_(std::move(tree)) {
   config_.resolution_m = tree_->getResolution();
+  rules_ = UpdateRules::FromConfig(config_);  // The surface margin is in voxels of this tree.
   ApplyConfigToTree();
 }
 

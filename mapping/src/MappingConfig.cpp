@@ -22,6 +22,9 @@ MappingConfig ParseMappingConfig(robotio::ConfigNode& node) {
   node.Read("clamp_max", &config.clamp_max, 0.501, 0.999);
   node.Read("occupancy_threshold", &config.occupancy_threshold, 0.01, 0.99);
   node.Read("free_threshold", &config.free_threshold, 0.001, 0.99);
+  node.Read("surface_margin_voxels", &config.surface_margin_voxels, 0.0, 20.0);
+  node.Read("min_incidence_cos", &config.min_incidence_cos, 0.01, 1.0);
+  node.Read("surface_band", &config.surface_band);
   node.Read("voxel_filter_m", &config.voxel_filter_m, 0.005, 2.0);
   auto status = ValidateMappingConfig(config, node.file());
   if (!status) node.Fail("occupancy_threshold", status.error().message);
@@ -46,6 +49,10 @@ robotio::Status ValidateMappingConfig(const MappingConfig& config, const std::st
                config.free_threshold <= config.occupancy_threshold)) {
     why << "free_threshold must lie in (clamp_min, occupancy_threshold], got "
         << config.free_threshold;
+  } else if (!(config.surface_margin_voxels >= 0.0)) {
+    why << "surface_margin_voxels must not be negative, got " << config.surface_margin_voxels;
+  } else if (!(config.min_incidence_cos > 0.0 && config.min_incidence_cos <= 1.0)) {
+    why << "min_incidence_cos must lie in (0, 1], got " << config.min_incidence_cos;
   }
   if (why.str().empty()) return robotio::Ok{};
   return robotio::Error{source + ": mapping: " + why.str()};

@@ -54,6 +54,12 @@ void Finish(DualOcTree& tree, DualOcTreeNode* node, bool allow_prune) {
   node->updateOccupancyChildren();
 }
 
+bool AnyBit(const std::uint64_t (&a)[8], const std::uint64_t (&b)[8]) {
+  std::uint64_t any = 0;
+  for (int w = 0; w < 8; ++w) any |= a[w] | b[w];
+  return any != 0;
+}
+
 }  // namespace
 
 void ScanIntegrator::PrepareIndex(const octomap::OcTreeKey& min_key,
@@ -126,20 +132,35 @@ ScanStatistics ScanIntegrator::Insert(DualOcTree& tree, const robotio::DepthRays
   PrepareIndex(min_key, max_key);
 
   unique_ends_.clear();
+  hit_keys_.clear();
   for (std::size_t i = 0; i < rays.ends.size(); ++i) {
     if (!valid[i]) continue;
-    const octomap::OcTreeKey& key = end_keys_[i];
+    if (rays.hit[i]) {
+      const octomap::OcTreeKey& key = end_keys_[i];
+      Block& block = BlockFor(key);
+      const std::uint32_t bit = InBlockIndex(key);
+      const std::uint64_t mask = std::uint64_t{1} << (bit & 63u);
+      if ((block.hit[bit >> 6] & mask) == 0) hit_keys_.push_back(key);
+      block.hit[bit >> 6] |= mask;
+    }
+    const std::optional<Eigen::Vector3f> free_end = FreeSpaceEnd(rays, i, rules);
+    if (!free_end) continue;
+    octomap::OcTreeKey key = end_keys_[i];
+    if (*free_end != rays.ends[i] &&
+        !tree.coordToKeyChecked(octomap::point3d(free_end->x(), free_end->y(), free_end->z()), key)) {
+      continue;
+    }
     Block& block = BlockFor(key);
     const std::uint32_t bit = InBlockIndex(key);
     const std::uint64_t mask = std::uint64_t{1} << (bit & 63u);
-    if (rays.hit[i]) block.hit[bit >> 6] |= mask;
     if ((block.end[bit >> 6] & mask) == 0) {
       block.end[bit >> 6] |= mask;
       unique_ends_.push_back(key);
     }
   }
 
-  // Free space: one trace per distinct end voxel, to its centre (OctoMap's discretise).
+  // Free space: one trace per distinct free-space end voxel, to its centre (OctoMap's
+  // discretise; the free end of a hit with a margin lies between the origin and the hit).
   stats.traced_rays = unique_ends_.size();
   for (const octomap::OcTreeKey& end_key : unique_ends_) {
     if (!tree.computeRayKeys(origin, tree.keyToCoord(end_key), key_ray_)) continue;
@@ -149,8 +170,54 @@ ScanStatistics ScanIntegrator::Insert(DualOcTree& tree, const robotio::DepthRays
       block.free[bit >> 6] |= std::uint64_t{1} << (bit & 63u);
     }
   }
+  if (rules.surface_band) ClearSurfaceBand();
   UpdateTree(tree, rules, &stats);
   return stats;
+}
+
+ScanIntegrator::Block* ScanIntegrator::FindBlock(const octomap::OcTreeKey& key) {
+  const std::uint32_t bx = key[0] >> 3, by = key[1] >> 3, bz = key[2] >> 3;
+  std::int32_t slot = -1;
+  if (use_dense_) {
+    if (bx < box_min_[0] || by < box_min_[1] || bz < box_min_[2]) return nullptr;
+    const std::uint32_t cx = bx - box_min_[0], cy = by - box_min_[1], cz = bz - box_min_[2];
+    if (cx >= box_dims_[0] || cy >= box_dims_[1] || cz >= box_dims_[2]) return nullptr;
+    slot = dense_index_[(static_cast<std::size_t>(cz) * box_dims_[1] + cy) * box_dims_[0] + cx];
+  } else {
+    const auto it = sparse_index_.find((std::uint64_t{bx} << 32) | (std::uint64_t{by} << 16) | bz);
+    if (it != sparse_index_.end()) slot = it->second;
+  }
+  return slot < 0 ? nullptr : &blocks_[static_cast<std::size_t>(slot)];
+}
+
+void ScanIntegrator::ClearSurfaceBand() {
+  for (const octomap::OcTreeKey& key : hit_keys_) {
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const octomap::OcTreeKey n(static_cast<octomap::key_type>(key[0] + dx),
+                                     static_cast<octomap::key_type>(key[1] + dy),
+                                     static_cast<octomap::key_type>(key[2] + dz));
+          Block* block = FindBlock(n);
+          if (block == nullptr) continue;  // Nothing of the scan there.
+          const std::uint32_t bit = InBlockIndex(n);
+          block->free[bit >> 6] &= ~(std::uint64_t{1} << (bit & 63u));
+        }
+      }
+    }
+  }
+}
+
+std::optional<Eigen::Vector3f> FreeSpaceEnd(const robotio::DepthRays& rays, std::size_t i,
+                                            const UpdateRules& rules) {
+  const Eigen::Vector3f& end = rays.ends[i];
+  if (!rays.hit[i] || rules.surface_margin_m <= 0.0f || rays.incidence_cos.empty()) return end;
+  const float margin =
+      rules.surface_margin_m / std::max(rays.incidence_cos[i], rules.min_incidence_cos);
+  const Eigen::Vector3f ray = end - rays.origin;
+  const float length = ray.norm();
+  if (length <= margin) return std::nullopt;
+  return end - ray * (margin / length);
 }
 
 void ScanIntegrator::UpdateTree(DualOcTree& tree, const UpdateRules& rules,
@@ -171,6 +238,10 @@ void ScanIntegrator::UpdateTree(DualOcTree& tree, const UpdateRules& rules,
 
   for (const std::int32_t slot : order_) {
     const Block& block = blocks_[static_cast<std::size_t>(slot)];
+    // A block holding only the end of a ray cut at max range (no hit, not traversed) has
+    // nothing to update; descending into it would leave a childless node with the prior,
+    // which reads as a pruned, occupied 8x8x8 cube.
+    if (!AnyBit(block.free, block.hit)) continue;
     unsigned common = 0;  // Deepest depth whose node the previous block shares.
     if (previous != nullptr) {
       const std::uint32_t diff = (block.coords[0] ^ previous->coords[0]) |

@@ -15,6 +15,9 @@ UpdateRules UpdateRules::FromConfig(const MappingConfig& config) {
   rules.clamp_max = octomap::logodds(config.clamp_max);
   rules.threshold = octomap::logodds(config.occupancy_threshold);
   rules.free_threshold = octomap::logodds(config.free_threshold);
+  rules.surface_margin_m = static_cast<float>(config.surface_margin_voxels * config.resolution_m);
+  rules.min_incidence_cos = static_cast<float>(config.min_incidence_cos);
+  rules.surface_band = config.surface_band;
   return rules;
 }
 

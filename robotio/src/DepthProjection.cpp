@@ -1,7 +1,9 @@
 #include "dynamap/robotio/DepthProjection.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <optional>
 
 namespace dynamap::robotio {
 
@@ -47,6 +49,49 @@ PointList DepthToBasePoints(const DepthFrame& frame, const KinectMount& mount) {
   return points;
 }
 
+namespace {
+
+// Point of pixel (u, v) in the optical frame; nullopt outside the image or the range.
+std::optional<Eigen::Vector3f> PixelPoint(const DepthFrame& frame, int u, int v,
+                                          std::uint16_t min_mm, double max_mm) {
+  if (u < 0 || v < 0 || u >= frame.width || v >= frame.height) return std::nullopt;
+  const std::uint16_t d = frame.At(u, v);
+  if (d < min_mm || d > max_mm) return std::nullopt;
+  const Intrinsics& k = frame.intrinsics;
+  const float z = static_cast<float>(d) * 0.001f;
+  return Eigen::Vector3f(static_cast<float>((u - k.cx) / k.fx) * z,
+                         static_cast<float>((v - k.cy) / k.fy) * z, z);
+}
+
+// Surface tangent at `p` along one image axis, towards the neighbour nearer in depth (the
+// other one may lie across a depth edge).
+std::optional<Eigen::Vector3f> Tangent(const Eigen::Vector3f& p,
+                                       const std::optional<Eigen::Vector3f>& before,
+                                       const std::optional<Eigen::Vector3f>& after) {
+  if (before && (!after || std::abs(before->z() - p.z()) <= std::abs(after->z() - p.z()))) {
+    return p - *before;
+  }
+  if (after) return *after - p;
+  return std::nullopt;
+}
+
+// |cos| of the angle between the ray to p and the surface normal from the four
+// neighbouring pixels; 0 when they do not give a normal (the Kinect drops pixels at
+// grazing incidence, so a missing neighbour is most often a grazing surface).
+float IncidenceCos(const DepthFrame& frame, int u, int v, const Eigen::Vector3f& p,
+                   std::uint16_t min_mm, double max_mm) {
+  const auto tu = Tangent(p, PixelPoint(frame, u - 1, v, min_mm, max_mm),
+                          PixelPoint(frame, u + 1, v, min_mm, max_mm));
+  const auto tv = Tangent(p, PixelPoint(frame, u, v - 1, min_mm, max_mm),
+                          PixelPoint(frame, u, v + 1, min_mm, max_mm));
+  if (!tu || !tv) return 0.0f;
+  const Eigen::Vector3f n = tu->cross(*tv);
+  const float scale = n.norm() * p.norm();
+  return scale > 0.0f ? std::abs(n.dot(p)) / scale : 0.0f;
+}
+
+}  // namespace
+
 DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
                       const Eigen::Isometry3d& T_target_base, int stride) {
   const Intrinsics& k = frame.intrinsics;
@@ -67,6 +112,8 @@ DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
       const float z = hit ? static_cast<float>(d) * 0.001f : max_z / direction.norm();
       rays.ends.push_back(T * (direction * z));
       rays.hit.push_back(hit);
+      rays.incidence_cos.push_back(
+          hit ? IncidenceCos(frame, u, v, direction * z, min_mm, max_mm) : 1.0f);
     }
   }
   return rays;

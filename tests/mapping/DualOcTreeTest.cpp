@@ -168,6 +168,71 @@ TEST(DualOcTreeTest, RaysBeyondMaxRangeClearUpToItWithoutAHit) {
   EXPECT_EQ(map.StaticState({2.52f, 0.02f, 0.02f}), VoxelState::kUnknown);
 }
 
+TEST(DualOcTreeTest, EndOfARayCutAtMaxRangeStaysUnknownAtABlockBoundary) {
+  // The cut end (x in [0.40, 0.45)) is the first voxel of a new 8x8x8 block that no other
+  // voxel of the scan touches: it must not turn into a node (a pruned, occupied cube).
+  DualMap map{ThesisRuleConfig()};
+  map.InsertRays(SingleRay({0.02f, 0.02f, 0.02f}, {0.42f, 0.02f, 0.02f}, false));
+  EXPECT_EQ(map.tree().search(0.42, 0.02, 0.02), nullptr);
+  EXPECT_FALSE(map.IsStaticOccupied({0.47f, 0.22f, 0.32f}));
+  EXPECT_EQ(map.StaticState({0.37f, 0.02f, 0.02f}), VoxelState::kFree);
+}
+
+// The floor at z = 0 lies on a voxel boundary: a grazing ray to a floor point just below
+// it crosses the layer above for decimetres. x in [2.35, 2.40), z in [0, 0.05) is such a
+// floor voxel, crossed by the ray from (0.02, 0.02, 0.5) to (2.52, 0.02, -0.004).
+const Eigen::Vector3f kFloorVoxel(2.375f, 0.025f, 0.025f);
+
+robotio::DepthRays GrazingFloorRay() {
+  robotio::DepthRays rays = SingleRay({0.02f, 0.02f, 0.5f}, {2.52f, 0.02f, -0.004f}, true);
+  rays.incidence_cos = {0.504f / 2.55f};  // Elevation of the ray above the floor.
+  return rays;
+}
+
+DualMap MapWithHitFloorVoxel(const MappingConfig& config) {
+  DualMap map{config};
+  robotio::DepthRays down = SingleRay({2.37f, 0.02f, 0.5f}, {2.37f, 0.02f, 0.01f}, true);
+  down.incidence_cos = {1.0f};
+  map.InsertRays(down);
+  return map;
+}
+
+TEST(DualOcTreeTest, GrazingRaysDoNotClearTheFloorTheySkim) {
+  DualMap map = MapWithHitFloorVoxel(MappingConfig{});
+  ASSERT_TRUE(map.IsStaticOccupied(kFloorVoxel));
+  for (int scan = 0; scan < 8; ++scan) map.InsertRays(GrazingFloorRay());
+  EXPECT_TRUE(map.IsStaticOccupied(kFloorVoxel));
+  // Well above the floor the same ray is still free-space evidence.
+  EXPECT_EQ(map.StaticState({1.02f, 0.02f, 0.28f}), VoxelState::kFree);
+}
+
+TEST(DualOcTreeTest, WithoutTheSurfaceMarginGrazingRaysClearTheFloor) {
+  MappingConfig config;
+  config.surface_margin_voxels = 0.0;  // OctoMap's rule: free up to the end voxel.
+  config.surface_band = false;
+  DualMap map = MapWithHitFloorVoxel(config);
+  for (int scan = 0; scan < 8; ++scan) map.InsertRays(GrazingFloorRay());
+  EXPECT_EQ(map.StaticState(kFloorVoxel), VoxelState::kFree);
+}
+
+TEST(DualOcTreeTest, VoxelsNextToAHitAreNotObservedFreeInThatScan) {
+  for (const bool band : {true, false}) {
+    MappingConfig config = ThesisRuleConfig();  // One free observation makes a voxel free.
+    config.surface_band = band;
+    DualMap map{config};
+    robotio::DepthRays rays;
+    rays.origin = Eigen::Vector3f(0.02f, 0.02f, 0.02f);
+    // The first ray ends next to a voxel the second one crosses (no incidence known).
+    rays.ends = {Eigen::Vector3f(2.02f, 0.07f, 0.02f), Eigen::Vector3f(3.02f, 0.02f, 0.02f)};
+    rays.hit = {true, true};
+    map.InsertRays(rays);
+    EXPECT_EQ(map.StaticState({2.02f, 0.02f, 0.02f}),
+              band ? VoxelState::kUnknown : VoxelState::kFree) << "band " << band;
+    EXPECT_EQ(map.StaticState({1.52f, 0.02f, 0.02f}), VoxelState::kFree);
+    EXPECT_TRUE(map.IsStaticOccupied({2.02f, 0.07f, 0.02f}));
+  }
+}
+
 TEST(DualOcTreeTest, NeverObservedVoxelsAreUnknown) {
   DualMap map{ThesisRuleConfig()};
   EXPECT_EQ(map.StaticState({1, 1, 1}), VoxelState::kUnknown);

@@ -2,6 +2,10 @@
 
 #include <octomap/OcTreeKey.h>
 
+#include <optional>
+
+#include "dynamap/mapping/ScanIntegrator.hpp"
+
 namespace dynamap::mapping::testing {
 namespace {
 
@@ -25,8 +29,27 @@ void ReferenceInsert(DualOcTree& tree, const robotio::DepthRays& rays, const Upd
     const Eigen::Vector3f& p = rays.ends[i];
     if (!tree.coordToKeyChecked(octomap::point3d(p.x(), p.y(), p.z()), end)) continue;
     if (rays.hit[i]) hit_keys.insert(end);
-    if (tree.computeRayKeys(origin, tree.keyToCoord(end), ray)) {
+    const std::optional<Eigen::Vector3f> free_end = FreeSpaceEnd(rays, i, rules);
+    octomap::OcTreeKey free_key;
+    if (!free_end || !tree.coordToKeyChecked(
+                         octomap::point3d(free_end->x(), free_end->y(), free_end->z()), free_key)) {
+      continue;
+    }
+    if (tree.computeRayKeys(origin, tree.keyToCoord(free_key), ray)) {
       free_keys.insert(ray.begin(), ray.end());
+    }
+  }
+  if (rules.surface_band) {
+    for (const octomap::OcTreeKey& key : hit_keys) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dz = -1; dz <= 1; ++dz) {
+            free_keys.erase(octomap::OcTreeKey(static_cast<octomap::key_type>(key[0] + dx),
+                                               static_cast<octomap::key_type>(key[1] + dy),
+                                               static_cast<octomap::key_type>(key[2] + dz)));
+          }
+        }
+      }
     }
   }
   octomap::KeySet all = free_keys;

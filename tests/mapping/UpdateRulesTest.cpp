@@ -113,6 +113,11 @@ TEST(MappingConfigTest, ParsesYamlAndRejectsBadValuesNamingTheKey) {
   EXPECT_DOUBLE_EQ(ok->resolution_m, 0.1);
   EXPECT_EQ(ok->update, UpdateMode::kRegular);
   EXPECT_DOUBLE_EQ(ok->prob_low, 0.35);
+  auto surface = parse("mapping:\n  surface_margin_voxels: 2\n  surface_band: false\n");
+  ASSERT_TRUE(surface) << surface.error().message;
+  EXPECT_DOUBLE_EQ(surface->surface_margin_voxels, 2.0);
+  EXPECT_FALSE(surface->surface_band);
+  EXPECT_FALSE(parse("mapping:\n  min_incidence_cos: 0\n"));
 
   auto bad_range = parse("mapping:\n  prob_high: 0.4\n");
   ASSERT_FALSE(bad_range);

@@ -111,6 +111,44 @@ TEST(DepthProjection, RaysBeyondMaxRangeAreCutAndMarkedAsMisses) {
   EXPECT_NEAR((rays.ends[1] - rays.origin).norm(), 4.0, 1e-5);
 }
 
+// A 5x5 image of the plane z = 2 + slope * y (optical frame): tilted by atan(slope)
+// about x, so the centre ray meets it at cos = 1 / sqrt(1 + slope^2).
+DepthFrame TiltedPlane(double slope) {
+  DepthFrame frame;
+  frame.width = 5;
+  frame.height = 5;
+  frame.intrinsics = Intrinsics{5, 5, 100.0, 100.0, 2.0, 2.0};
+  for (int v = 0; v < 5; ++v) {
+    for (int u = 0; u < 5; ++u) {
+      const double y_over_z = (v - 2.0) / 100.0;
+      const double z = 2.0 / (1.0 - slope * y_over_z);
+      frame.depth_mm.push_back(static_cast<std::uint16_t>(std::lround(z * 1000.0)));
+    }
+  }
+  return frame;
+}
+
+TEST(DepthProjection, RaysCarryTheIncidenceOfTheSurfaceTheyHit) {
+  KinectMount mount;
+  const std::size_t centre = 2 * 5 + 2;
+  const DepthRays head_on = DepthToRays(TiltedPlane(0.0), mount, Eigen::Isometry3d::Identity());
+  ASSERT_EQ(head_on.incidence_cos.size(), head_on.ends.size());
+  EXPECT_NEAR(head_on.incidence_cos[centre], 1.0, 1e-3);
+  const DepthRays grazing = DepthToRays(TiltedPlane(4.0), mount, Eigen::Isometry3d::Identity());
+  EXPECT_NEAR(grazing.incidence_cos[centre], 1.0 / std::sqrt(17.0), 0.02);
+}
+
+TEST(DepthProjection, PixelsWithoutNeighboursCountAsGrazing) {
+  DepthFrame frame;
+  frame.width = 3;
+  frame.height = 1;
+  frame.intrinsics = Intrinsics{3, 1, 100.0, 100.0, 1.0, 0.0};
+  frame.depth_mm = {0, 1500, 0};
+  const DepthRays rays = DepthToRays(frame, KinectMount{}, Eigen::Isometry3d::Identity());
+  ASSERT_EQ(rays.incidence_cos.size(), 1u);
+  EXPECT_EQ(rays.incidence_cos[0], 0.0f);
+}
+
 TEST(DepthImageIo, NonDepthImageIsAnErrorNamingTheFile) {
   auto image = ReadDepthImage(test::SharedData("movingai/arena.map"));
   ASSERT_FALSE(image.ok());

@@ -32,6 +32,19 @@ struct MappingConfig {
   // ray through a floor or wall voxel is then not enough to bar that voxel from the static
   // map for ever (Free + Occupied gives Low in Table 4.1). 0.5 is the thesis's rule.
   double free_threshold = 0.25;
+  // Free space near a measured surface. A voxel the surface only grazes, or that lies on the
+  // voxel boundary the surface runs along (the floor at z = 0), is crossed by rays through
+  // its empty part; counted as free, such crossings cleared floors and walls from a moving
+  // robot's map (and, once free, Table 4.1 keeps them out of the static map for good).
+  // A hit ray observes free space only until it comes within this distance, in voxels and
+  // measured along the surface normal, of the surface it hit; 0 = up to its end voxel.
+  double surface_margin_voxels = 1.0;
+  // |cos| of the incidence angle below which a hit counts as this grazing (the margin along
+  // the ray is at most surface_margin_voxels * resolution_m / min_incidence_cos).
+  double min_incidence_cos = 0.1;
+  // Voxels next to (26-neighbourhood) a voxel hit in the same scan are not observed free in
+  // that scan: the surface may lie in them within one voxel of noise and discretisation.
+  bool surface_band = true;
   double voxel_filter_m = 0.05;  // m, leaf of the preprocessing voxel grid (base frame).
 };
 

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -22,14 +23,22 @@ struct ScanStatistics {
   std::size_t free_voxels = 0;   // Voxels observed free (and not hit).
 };
 
-// Rules of one scan: each ray's end point is discretised to its voxel, the voxels from
-// the origin to that voxel's centre (excluded) are observed free, the end voxel is
-// observed occupied when the ray hit; a voxel both hit and traversed counts as hit. Every
-// voxel is updated once per scan with ApplyObservation.
+// Rules of one scan: each ray's end point is discretised to its voxel and observed
+// occupied when the ray hit. Free space: the voxels from the origin to the centre of the
+// voxel holding FreeSpaceEnd (excluded) are observed free, except voxels hit in this scan
+// (a voxel both hit and traversed counts as hit) and, with `surface_band`, their 26
+// neighbours. Every voxel is updated once per scan with ApplyObservation.
 //
 // Why it is fast: per-scan deduplication in 8x8x8-voxel bit blocks (no hashing per ray
 // step), blocks visited in Morton order so each tree path is walked once, and inner nodes
 // aggregated and pruned once, on the way back up, instead of after every voxel.
+// Where ray `i` stops observing free space: its end point, or for a hit with a known
+// incidence, the point surface_margin_m / max(incidence_cos, min_incidence_cos) before it
+// (where the ray comes within surface_margin_m of the surface plane). nullopt when the
+// margin is longer than the ray.
+[[nodiscard]] std::optional<Eigen::Vector3f> FreeSpaceEnd(const robotio::DepthRays& rays,
+                                                          std::size_t i, const UpdateRules& rules);
+
 class ScanIntegrator {
  public:
   // `rays` are in the map frame (robotio::DepthToRays with T_map_base).
@@ -46,6 +55,8 @@ class ScanIntegrator {
   };
 
   Block& BlockFor(const octomap::OcTreeKey& key);
+  Block* FindBlock(const octomap::OcTreeKey& key);  // nullptr when the scan has no such block.
+  void ClearSurfaceBand();
   void PrepareIndex(const octomap::OcTreeKey& min_key, const octomap::OcTreeKey& max_key);
   void UpdateTree(DualOcTree& tree, const UpdateRules& rules, ScanStatistics* stats);
 
@@ -59,6 +70,7 @@ class ScanIntegrator {
   std::uint64_t last_block_id_ = ~0ull;
   std::vector<octomap::OcTreeKey> end_keys_;
   std::vector<octomap::OcTreeKey> unique_ends_;
+  std::vector<octomap::OcTreeKey> hit_keys_;  // Distinct hit voxels of the scan.
   std::vector<std::int32_t> order_;
   octomap::KeyRay key_ray_;
 };

@@ -21,6 +21,9 @@ struct UpdateRules {
   float clamp_max = 0.0f;  // log-odds.
   float threshold = 0.0f;  // log-odds of occupancy_threshold.
   float free_threshold = 0.0f;  // log-odds of free_threshold (below: free; between: unknown).
+  float surface_margin_m = 0.0f;  // m, surface_margin_voxels * resolution_m.
+  float min_incidence_cos = 1.0f;
+  bool surface_band = false;
 
   [[nodiscard]] static UpdateRules FromConfig(const MappingConfig& config);
 };

@@ -29,6 +29,10 @@ struct DepthRays {
   Eigen::Vector3f origin;
   PointList ends;
   std::vector<bool> hit;
+  // Per ray, |cos| of the angle between the ray and the normal of the surface it hit (1 =
+  // head-on, towards 0 = grazing), from the neighbouring pixels; 0 when they give no
+  // normal, 1 for rays without a hit. Empty when no ray has it (rays made from points).
+  std::vector<float> incidence_cos;
 };
 [[nodiscard]] DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
                                     const Eigen::Isometry3d& T_target_base, int stride = 1);
