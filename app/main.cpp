@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
         return dynamap::app::gui::RunGui(
             argc, argv,
             {options.map_file, options.explore_world, options.explore_out,
-             options.explore_max_time_s});
+             options.explore_max_time_s, options.explore_poses, options.explore_kinect_width});
 #else
         (void)options;
         (void)argv;

@@ -33,6 +33,17 @@ void RegisterGuiCommand(CLI::App& app, GuiLauncher launch) {
                   "workspace's, 600)")
       ->check(CLI::Range(1.0, 7200.0))
       ->needs(explore);
+  // Same names, choices and ranges as `dynamap explore`, so a mission reads the same in both.
+  gui->add_option("--poses", options->explore_poses,
+                  "Where the --explore mission places frames from (default: the Mission "
+                  "workspace's, slam)")
+      ->check(CLI::IsMember({"slam", "odometry", "groundtruth"}))
+      ->needs(explore);
+  gui->add_option("--kinect-width", options->explore_kinect_width,
+                  "Simulated Kinect image width of the --explore mission in px (height = 3/4 "
+                  "of it; default: the Mission workspace's, 320)")
+      ->check(CLI::Range(80, 640))
+      ->needs(explore);
   gui->callback([options, launch = std::move(launch)] {
     if (!options->explore_world.empty()) {
       if (auto world = robotio::sim::LoadWorld(options->explore_world); !world) {

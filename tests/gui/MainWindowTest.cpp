@@ -2,6 +2,9 @@
 // workspace, the status bar, recent files and layout kept in QSettings, and what
 // `dynamap gui --explore` starts with (or refuses to start with).
 #include <QAction>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QSettings>
 #include <QTemporaryDir>
@@ -112,12 +115,13 @@ class MainWindowTest : public QObject {
     std::vector<MissionPhase> phases;
     connect(session, &MissionSession::PhaseChanged, this,
             [&phases](MissionPhase phase) { phases.push_back(phase); });
-    window.Mission()->Panel()->SetKinectSize(160, 120);  // Quicker; the mission is the same.
     const QString world = ResourcePath(QStringLiteral("worlds/small_office.yaml"));
     GuiOptions options;
     options.explore_world = world.toStdString();
     options.explore_out = dir.path().toStdString();
-    options.explore_max_time_s = 1.0;  // The shortest the panel takes.
+    options.explore_max_time_s = 1.0;       // The shortest the panel takes.
+    options.explore_poses = "groundtruth";  // Not the panel's default (slam).
+    options.explore_kinect_width = 160;     // Not the panel's default (320); also quicker.
 
     ApplyStartOptions(window, options);
     QCOMPARE(window.CurrentWorkspace(), window.WorkspaceNames().indexOf(QStringLiteral("Mission")));
@@ -125,6 +129,9 @@ class MainWindowTest : public QObject {
     QCOMPARE(QString::fromStdString(config.world_file), QFileInfo(world).absoluteFilePath());
     QCOMPARE(QString::fromStdString(config.out_dir), dir.path());
     QCOMPARE(config.max_time_s, 1.0);
+    QCOMPARE(config.poses, runtime::PoseSource::kGroundTruth);
+    QCOMPARE(config.kinect_width, 160);
+    QCOMPARE(config.kinect_height, 120);
     QCOMPARE(session->Phase(), MissionPhase::kStarting);
     QTRY_VERIFY_WITH_TIMEOUT(
         session->Phase() == MissionPhase::kFinished || session->Phase() == MissionPhase::kFailed,
@@ -132,7 +139,11 @@ class MainWindowTest : public QObject {
     QVERIFY2(session->Phase() == MissionPhase::kFinished, qPrintable(session->LastError()));
     QVERIFY(std::find(phases.begin(), phases.end(), MissionPhase::kRunning) != phases.end());
     QVERIFY(session->Report().has_value());
-    QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("report.json"))));
+    QFile report_file(dir.filePath(QStringLiteral("report.json")));
+    QVERIFY(report_file.open(QIODevice::ReadOnly));
+    const QJsonObject report = QJsonDocument::fromJson(report_file.readAll()).object();
+    QCOMPARE(report.value(QStringLiteral("poses")).toString(), QStringLiteral("groundtruth"));
+    QCOMPARE(report.value(QStringLiteral("kinect_width")).toInt(), 160);
     QVERIFY(window.isVisible());  // The results stay on screen until the operator closes.
   }
 

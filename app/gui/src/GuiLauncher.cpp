@@ -12,6 +12,7 @@
 #include "dynamap/app/Version.hpp"
 #include "dynamap/app/gui/MainWindow.hpp"
 #include "dynamap/app/gui/MissionWorkspace.hpp"
+#include "dynamap/app/runtime/MissionConfig.hpp"
 
 namespace dynamap::app::gui {
 
@@ -30,6 +31,11 @@ void ApplyStartOptions(MainWindow& window, const GuiOptions& options) {
     request.world_file = QString::fromStdString(options.explore_world);
     request.out_dir = QString::fromStdString(options.explore_out);
     if (options.explore_max_time_s > 0.0) request.max_time_s = options.explore_max_time_s;
+    for (const auto source : {runtime::PoseSource::kSlam, runtime::PoseSource::kOdometry,
+                              runtime::PoseSource::kGroundTruth}) {
+      if (options.explore_poses == runtime::ToString(source)) request.poses = source;
+    }
+    if (options.explore_kinect_width > 0) request.kinect_width = options.explore_kinect_width;
     window.Explore(request);  // A refusal or failure shows in the window like a pressed Start.
   }
 }

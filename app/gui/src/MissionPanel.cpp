@@ -194,6 +194,10 @@ runtime::MissionConfig MissionPanel::BuildConfig() const {
 void MissionPanel::SetWorldFile(const QString& file) { SelectFile(world_, file); }
 void MissionPanel::SetRigFile(const QString& file) { SelectFile(rig_, file); }
 
+void MissionPanel::SetPoseSource(runtime::PoseSource source) {
+  poses_->setCurrentIndex(poses_->findData(static_cast<int>(source)));
+}
+
 void MissionPanel::SetKinectSize(int width, int height) {
   const int index = kinect_size_->findData(QSize(width, height));
   if (index >= 0) {

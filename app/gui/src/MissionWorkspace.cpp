@@ -90,6 +90,10 @@ bool MissionWorkspace::Explore(const ExploreRequest& request) {
   panel_->SetWorldFile(request.world_file);
   if (!request.out_dir.isEmpty()) panel_->SetOutputDir(request.out_dir);
   if (request.max_time_s) panel_->SetTimeLimit(*request.max_time_s);
+  if (request.poses) panel_->SetPoseSource(*request.poses);
+  if (request.kinect_width) {
+    panel_->SetKinectSize(*request.kinect_width, *request.kinect_width * 3 / 4);
+  }
   return StartMission();  // What the Start button does.
 }
 

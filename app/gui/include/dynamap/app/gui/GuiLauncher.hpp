@@ -13,6 +13,8 @@ struct GuiOptions {
   std::string explore_world;  // when not empty: the Mission workspace starts a mission in it.
   std::string explore_out;    // results folder of that mission; empty: the workspace's default.
   double explore_max_time_s = 0.0;  // simulated time limit of that mission, s; 0: the panel's.
+  std::string explore_poses;        // runtime::ToString of a PoseSource; empty: the panel's.
+  int explore_kinect_width = 0;     // Kinect image width, px (height 3/4 of it); 0: the panel's.
 };
 
 // What `options` asks of a shown window at start: open a map or start a mission.

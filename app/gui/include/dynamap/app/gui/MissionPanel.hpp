@@ -31,6 +31,7 @@ class MissionPanel : public QWidget {
   // Selects `file` (adding it to the list when it is not one of resources/).
   void SetWorldFile(const QString& file);
   void SetRigFile(const QString& file);
+  void SetPoseSource(runtime::PoseSource source);
   void SetKinectSize(int width, int height);
   void SetTimeLimit(double seconds);
   void SetMapRefresh(double seconds);

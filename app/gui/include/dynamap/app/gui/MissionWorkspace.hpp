@@ -10,15 +10,18 @@
 #include <optional>
 
 #include "dynamap/app/gui/MissionSession.hpp"
+#include "dynamap/app/runtime/MissionConfig.hpp"
 
 namespace dynamap::app::gui {
 
 // A mission to start without the operator (`dynamap gui --explore`); what is left empty
 // keeps the panel's setting.
 struct ExploreRequest {
-  QString world_file;                // selected, and added to the list if not shipped.
-  QString out_dir;                   // results folder; empty: a new one per mission.
-  std::optional<double> max_time_s;  // simulated time limit, s.
+  QString world_file;                        // selected, and added to the list if not shipped.
+  QString out_dir;                           // results folder; empty: a new one per mission.
+  std::optional<double> max_time_s;          // simulated time limit, s.
+  std::optional<runtime::PoseSource> poses;  // where frames are placed from.
+  std::optional<int> kinect_width;           // Kinect image width, px; the height is 3/4 of it.
 };
 
 class DepthPreview;
