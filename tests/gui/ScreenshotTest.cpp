@@ -72,7 +72,10 @@ class ScreenshotTest : public QObject {
     MissionWorkspace* mission = window_->Mission();
     mission->Panel()->SetWorldFile(ResourcePath(QStringLiteral("worlds/small_office.yaml")));
     mission->Panel()->SetKinectSize(160, 120);
-    mission->Panel()->SetTimeLimit(6.0);
+    mission->Panel()->SetPoseSource(runtime::PoseSource::kGroundTruth);
+    // Long enough for the first look around (about 13 s) and some driving, so the trail
+    // and the planned path are in the picture.
+    mission->Panel()->SetTimeLimit(30.0);
     mission->Panel()->SetMapRefresh(1.0);
     mission->Panel()->SetOutputDir(out.path());
     QVERIFY(mission->StartMission());
@@ -85,6 +88,7 @@ class ScreenshotTest : public QObject {
     whole.save(QDir(out_dir_).filePath(QStringLiteral("mission_small_office.png")));
     QVERIFY(DistinctColours(view) > 20);
     QVERIFY(!mission->Depth(0)->Image().isNull());
+    QVERIFY(mission->Session()->Snapshot().distance_m > 1.0);  // It drove: a trail to see.
   }
 
   void CalibrationWizard() {
