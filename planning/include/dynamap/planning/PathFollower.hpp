@@ -18,7 +18,7 @@ struct PathFollowerConfig {
   double max_accel_mps2 = 0.8;         // m/s², base limit, also used for braking to the goal.
   double max_yaw_accel_radps2 = 3.0;   // rad/s², base limit.
   double lookahead_m = 0.6;            // m along the path ahead of the robot's projection ...
-  double min_lookahead_m = 0.25;       // m, ... shrinking to this plus the clearance in tight
+  double min_lookahead_m = 0.15;       // m, ... shrinking to this plus the clearance in tight
                                        // places, so turns behind doorways are not cut.
   double heading_gain = 2.0;           // 1/s, ω = gain · heading error (before limits).
   double turn_in_place_rad = 0.8;      // rad, above this heading error the robot only turns.
