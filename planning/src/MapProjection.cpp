@@ -83,7 +83,12 @@ std::vector<int> MapProjector::ExpireDynamicObstacles(const VoxelMapView& view, 
   if (config_.dynamic_obstacle_ttl_s <= 0.0) return {};
   std::vector<int> expired;
   for (const int i : dynamic_cells_) {
-    if (now_s - dynamic_since_s_[i] > config_.dynamic_obstacle_ttl_s) expired.push_back(i);
+    // Released cells keep their time (so a later touch does not re-stamp them) but are not
+    // re-projected again on every call.
+    if (now_s - dynamic_since_s_[i] > config_.dynamic_obstacle_ttl_s &&
+        map_.cells[i] == CellState::kObstacle) {
+      expired.push_back(i);
+    }
   }
   return expired.empty() ? expired : Reproject(view, expired, now_s);
 }

@@ -158,6 +158,7 @@ TEST(MapProjection, DynamicOnlyObstaclesExpireButStaticOnesStay) {
   const std::vector<int> released = projector.ExpireDynamicObstacles(world, 110.5);
   ASSERT_EQ(released.size(), 1u);
   EXPECT_EQ(projector.map().At(person), CellState::kNavigable);
+  EXPECT_TRUE(projector.ExpireDynamicObstacles(world, 112.0).empty());  // Released once.
   EXPECT_EQ(projector.map().At(cabinet), CellState::kObstacle);
   // Once the trace is seen free and the person steps in again, it blocks afresh.
   world.dynamic_boxes.clear();

@@ -38,15 +38,9 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
   }
   const auto plan = mediator_.plan.Get();
   if (now_ns < recovery_until_ns_) {
-    robotio::VelocityCommand back{now_ns, recovery_.v, recovery_.omega};
     // Backing off goes where no Kinect looks: the map says what is behind.
-    if (plan && plan->value.map &&
-        planning::DrivesIntoKnownObstacle(*plan->value.map, pose, back,
-                                          config_.guard.footprint_radius_m, config_.map_guard_s)) {
-      back.v = 0.0;
-      ++mediator_.counters.map_guard_stops;
-    }
-    return back;
+    return HoldAtKnownObstacles(plan ? plan->value.map : nullptr, pose,
+                                {now_ns, recovery_.v, recovery_.omega});
   }
 
   // Look around once before following any plan: the first view is narrow.
@@ -69,16 +63,22 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
     }
   }
   planning::FollowerOutput out = follower_.Step(pose, clearance, dt_s);
-  // The Kinects see nothing within 0.5 m or beside the base: door posts passing out of view
-  // are checked on the map instead.
-  if (plan->value.map &&
-      planning::DrivesIntoKnownObstacle(*plan->value.map, pose, out.command,
-                                        config_.guard.footprint_radius_m, config_.map_guard_s)) {
-    out.command.v = 0.0;
+  out.command.stamp_ns = now_ns;
+  return HoldAtKnownObstacles(plan->value.map, pose, out.command);
+}
+
+robotio::VelocityCommand ControlWorker::HoldAtKnownObstacles(
+    const std::shared_ptr<const planning::GridMap>& map, const robotio::Pose2D& pose,
+    robotio::VelocityCommand command) {
+  // The Kinects see nothing within 0.5 m, beside or behind the base: door posts passing
+  // out of view are checked on the map instead.
+  if (map && planning::DrivesIntoKnownObstacle(*map, pose, command,
+                                               config_.guard.footprint_radius_m,
+                                               config_.map_guard_s)) {
+    command.v = 0.0;
     ++mediator_.counters.map_guard_stops;
   }
-  out.command.stamp_ns = now_ns;
-  return out.command;
+  return command;
 }
 
 void ControlWorker::Run() {

@@ -138,15 +138,14 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(Missio
   planning.planning = config.planning;
   planning.known_floor_radius_m = config.known_floor_radius_m;
   // The ring the Kinects cannot see, plus the widest floor gap the planner closes anyway.
-  planning.start_floor_radius_m =
-      std::max(config.known_floor_radius_m,
-               robotio::FloorBlindRadius(*rig) + config.planning.projection.max_floor_gap_m);
+  const double blind_m =
+      robotio::FloorBlindRadius(*rig) + config.planning.projection.max_floor_gap_m;
+  planning.start_floor_radius_m = std::max(config.known_floor_radius_m, blind_m);
   spdlog::debug("floor assumed within {:.2f} m of the start", planning.start_floor_radius_m);
   // Frontier viewpoints beyond the blind ring, so the unseen floor there comes into view;
   // a value set in the planning file wins.
   if (planning.planning.targets.min_view_distance_m <= 0.0) {
-    planning.planning.targets.min_view_distance_m =
-        robotio::FloorBlindRadius(*rig) + config.planning.projection.max_floor_gap_m;
+    planning.planning.targets.min_view_distance_m = blind_m;
   }
   planning.resolution_m = config.mapping.resolution_m;
   runtime->planning_ = std::make_unique<PlanningWorker>(*runtime->mediator_, planning);

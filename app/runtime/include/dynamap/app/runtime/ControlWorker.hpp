@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include "dynamap/app/runtime/Mediator.hpp"
 #include "dynamap/planning/CollisionGuard.hpp"
@@ -31,6 +32,11 @@ class ControlWorker {
 
  private:
   [[nodiscard]] robotio::VelocityCommand Step(std::int64_t now_ns, double dt_s);
+  // `command` with v = 0 when it would drive the footprint into a known obstacle of `map`
+  // (planning::DrivesIntoKnownObstacle); counted in map_guard_stops.
+  [[nodiscard]] robotio::VelocityCommand HoldAtKnownObstacles(
+      const std::shared_ptr<const planning::GridMap>& map, const robotio::Pose2D& pose,
+      robotio::VelocityCommand command);
 
   Mediator& mediator_;
   robotio::Rig rig_;
