@@ -104,7 +104,8 @@ TEST(ExplorationMission, ExploresTheSmallOffice) {
   EXPECT_GE(report->explored_free_fraction, 0.6);
   EXPECT_GE(report->surface_coverage, 0.25);
   EXPECT_GE(report->dynamic_accuracy, 0.9);
-  EXPECT_GT(report->plans, 100);
+  // It replans as it goes (every 0.5 s unless it is waiting for a turn to finish).
+  EXPECT_GE(report->plans, static_cast<std::int64_t>(report->mission_time_s / 2.0));
   for (const char* file : {"map.ot", "static.bt", "dynamic.bt", "trajectory.tum",
                            "groundtruth.tum", "map2d.png", "map2d.pgm", "map2d.yaml",
                            "report.json"}) {
