@@ -12,6 +12,10 @@
 #include "dynamap/app/gui/GuiLauncher.hpp"
 #endif
 
+namespace {
+constexpr int kBadInput = 2;
+}  // namespace
+
 int main(int argc, char** argv) {
   spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows the workers' decisions.
   CLI::App app{"dynamap " DYNAMAP_VERSION_STRING
@@ -38,8 +42,12 @@ int main(int argc, char** argv) {
   dynamap::app::RegisterGuiCommand(app, launch_gui);
   try {
     app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& e) {
+    return app.exit(e);  // A command failed; it has said why and chosen the code.
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // Help and version end with 0; a bad command line (missing file, value out of range,
+    // unknown option) with the same code as every other bad input.
+    return app.exit(e) == 0 ? 0 : kBadInput;
   }
   if (app.get_subcommands().empty()) {
 #ifdef DYNAMAP_WITH_GUI
