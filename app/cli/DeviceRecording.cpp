@@ -2,13 +2,12 @@
 
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "cli/CommandSupport.hpp"
+#include "cli/Interrupt.hpp"
 #include "cli/ProgressLine.hpp"
 #include "dynamap/robotio/RecordingWriter.hpp"
 #include "dynamap/robotio/Rig.hpp"
@@ -23,42 +22,6 @@ namespace {
 namespace hw = robotio::hardware;
 
 const char* const kCommand = "record";
-
-// Set by SIGINT/SIGTERM. A signal handler can reach nothing but a lock-free global, so this
-// is the one place the CLI keeps one.
-std::atomic<bool> interrupt_requested{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
-
-extern "C" void OnInterrupt(int signal_number) {
-  // The first Ctrl-C ends the recording cleanly; a second one, if that hangs, kills.
-  if (interrupt_requested.exchange(true)) {
-    std::signal(signal_number, SIG_DFL);
-    std::raise(signal_number);
-  }
-}
-
-// Routes SIGINT and SIGTERM to the flag while a recording runs, then restores them.
-class InterruptGuard {
- public:
-  InterruptGuard() {
-    interrupt_requested = false;
-    struct sigaction action {};
-    action.sa_handler = OnInterrupt;
-    sigemptyset(&action.sa_mask);
-    ::sigaction(SIGINT, &action, &old_int_);
-    ::sigaction(SIGTERM, &action, &old_term_);
-  }
-  ~InterruptGuard() {
-    ::sigaction(SIGINT, &old_int_, nullptr);
-    ::sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
-};
 
 std::string FramesText(const std::vector<std::uint64_t>& frames) {
   std::string text;
@@ -265,7 +228,7 @@ void RunDeviceRecord(const DeviceRecordOptions& options) {
     InterruptGuard guard;
     ProgressLine progress("recording");
     result = hw::RunRecordingLoop(
-        loop, devices.Sources(), **writer, interrupt_requested,
+        loop, devices.Sources(), **writer, InterruptGuard::flag(),
         [&](const hw::RecordingProgress& p) {
           const double fraction = options.duration_s > 0.0 ? p.elapsed_s / options.duration_s : 0.0;
           progress.Update(fraction, ProgressText(p, options.duration_s, true));

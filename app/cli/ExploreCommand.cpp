@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "cli/CommandSupport.hpp"
+#include "cli/Interrupt.hpp"
 #include "cli/ProgressLine.hpp"
 #include "dynamap/app/runtime/MissionRuntime.hpp"
 
@@ -68,9 +69,16 @@ void Run(const ExploreOptions& options) {
                                 : std::string("as fast as the machine allows"),
                config.out_dir);
   const auto wall_start = std::chrono::steady_clock::now();
+  const InterruptGuard interrupt;
   (*runtime)->Start();
   ProgressLine progress("exploring");
   while (!(*runtime)->finished()) {
+    if (InterruptGuard::requested()) {
+      spdlog::info("interrupted: stopping the mission and saving its results "
+                   "(interrupt again to quit without them)");
+      (*runtime)->Stop();
+      break;
+    }
     const runtime::MissionSnapshot s = (*runtime)->Snapshot();
     if (s.state == runtime::MissionState::kStopping) break;
     double known_m2 = 0.0;

@@ -171,6 +171,52 @@ TEST(Simulator, DrivingIntoAWallIsACollisionWithoutPenetration) {
   EXPECT_EQ(simulator.collision_count(), 1);
 }
 
+// A person whose path runs through the standing robot: x from 3 m to -3 m along y = 0.
+std::string WalkerThroughTheRobot(const std::string& yields) {
+  return testing::WallWorldYaml(
+      8.0, "people:\n  - {id: walker, speed: 1.0, loop: false, " + yields +
+               "path: [{at: [3.0, 0.0]}, {at: [-3.0, 0.0]}]}\n");
+}
+
+TEST(Simulator, PeopleWaitForTheRobotInsteadOfWalkingIntoIt) {
+  const World world = testing::MustParse(WalkerThroughTheRobot(""));
+  SimulatorConfig config = Config(2);
+  config.render_depth = false;
+  const RobotConfig robot;
+  Simulator simulator(world, robot, SmallRig(0.1), config);
+  SimOutput out = simulator.Advance(6.0);
+  EXPECT_TRUE(out.collisions.empty());
+  EXPECT_EQ(simulator.collision_count(), 0);
+  // It stopped at the yield clearance, about 2.1 s into its 6 s walk.
+  const double stop_distance = robot.footprint_radius_m + 0.25 + config.yield_clearance_m;
+  EXPECT_NEAR(simulator.person_wait_s(0), 6.0 - (3.0 - stop_distance), 0.05);
+  const double waited = simulator.person_wait_s(0);
+  // The robot drives out of the way (along +y); the person walks on and waits no longer.
+  simulator.SetCommand({0, 0.0, 1.5});
+  (void)simulator.Advance(1.05);
+  simulator.SetCommand({0, 0.8, 0.0});
+  (void)simulator.Advance(2.5);
+  simulator.SetCommand({0, 0.0, 0.0});
+  (void)simulator.Advance(1.0);
+  const double after_move = simulator.person_wait_s(0);
+  (void)simulator.Advance(3.0);
+  EXPECT_GT(after_move, waited);
+  EXPECT_NEAR(simulator.person_wait_s(0), after_move, 1e-6);
+  EXPECT_EQ(simulator.collision_count(), 0);
+}
+
+TEST(Simulator, APersonWhoDoesNotYieldWalksIntoTheStandingRobot) {
+  const World world = testing::MustParse(WalkerThroughTheRobot("yields: false, "));
+  SimulatorConfig config = Config(2);
+  config.render_depth = false;
+  Simulator simulator(world, RobotConfig{}, SmallRig(0.1), config);
+  const SimOutput out = simulator.Advance(6.0);
+  ASSERT_EQ(out.collisions.size(), 1u);
+  EXPECT_EQ(out.collisions[0].object_id, "walker");
+  EXPECT_EQ(out.collisions[0].kind, ObjectKind::kPerson);
+  EXPECT_NEAR(simulator.person_wait_s(0), 0.0, 1e-9);
+}
+
 TEST(Simulator, PeopleAreLabelledDynamicAndMovedChairsOnlyBeforeTheirMove) {
   World world = testing::MustParse(testing::WallWorldYaml(
       4.0,

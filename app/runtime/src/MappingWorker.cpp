@@ -15,6 +15,10 @@
 
 namespace dynamap::app::runtime {
 
+namespace {
+constexpr int kInspectionRaysPerRow = 160;
+}  // namespace
+
 MappingWorker::MappingWorker(Mediator& mediator, robotio::Rig rig, MappingWorkerConfig config)
     : mediator_(mediator),
       rig_(std::move(rig)),
@@ -56,8 +60,10 @@ void MappingWorker::Score(const CapturedFrame& frame, const robotio::KinectMount
   const Eigen::Isometry3d T = T_map_base.ToIsometry();
   if (frame.labels) accuracy_.Add(frame.depth, *frame.labels, mount, T);
   // Surfaces hit from within the inspection distance, and the grid columns the frame
-  // looked through (only those can change in the projection).
-  const robotio::DepthRays rays = robotio::DepthToRays(frame.depth, mount, T, 4);
+  // looked through (only those can change in the projection). A 160 px wide sample of the
+  // image: about one ray per voxel at the inspection distance, whatever the resolution.
+  const int stride = std::max(1, frame.depth.width / kInspectionRaysPerRow);
+  const robotio::DepthRays rays = robotio::DepthToRays(frame.depth, mount, T, stride);
   for (std::size_t i = 0; i < rays.ends.size(); ++i) {
     if (rays.hit[i] && (rays.ends[i] - rays.origin).norm() <= config_.inspection_distance_m) {
       inspected_voxels_.insert(VoxelId(rays.ends[i]));

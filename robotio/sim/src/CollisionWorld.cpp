@@ -37,9 +37,11 @@ Contact CollisionWorld::CheckSolids(const std::vector<Solid>& solids, const Eige
   return best;
 }
 
-Contact CollisionWorld::Check(const Eigen::Vector2d& centre, double radius, double t_s) const {
+Contact CollisionWorld::Check(const Eigen::Vector2d& centre, double radius, double t_s,
+                              const std::vector<double>* person_clock_s) const {
   Contact best = CheckSolids(fixed_, centre, radius);
-  const Contact moving = CheckSolids(MovingSolidsAt(*world_, t_s), centre, radius);
+  const Contact moving =
+      CheckSolids(MovingSolidsAt(*world_, t_s, person_clock_s), centre, radius);
   if (moving.clearance_m < best.clearance_m) best = moving;
   for (const Hole& h : world_->holes) {
     const Eigen::Vector2d mid = (h.min + h.max) / 2.0;
@@ -47,6 +49,11 @@ Contact CollisionWorld::Check(const Eigen::Vector2d& centre, double radius, doub
     if (clearance < best.clearance_m) best = {clearance, h.index};
   }
   return best;
+}
+
+double CollisionWorld::PersonClearance(const Person& person, const PersonState& state,
+                                       const Eigen::Vector2d& centre, double radius) const {
+  return CheckSolids(PersonSolids(person, state), centre, radius).clearance_m;
 }
 
 }  // namespace dynamap::robotio::sim

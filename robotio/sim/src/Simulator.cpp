@@ -28,7 +28,8 @@ Simulator::Simulator(World world, RobotConfig robot, Rig rig, SimulatorConfig co
       base_(robot_, world_.robot_start, HashKey(config.seed, 0xBA5E)),
       collision_world_(world_, robot_.height_m),
       step_ns_(std::max<std::int64_t>(1000, SecondsToNanos(config.physics_step_s))),
-      frame_index_(rig_.kinects.size(), 0) {
+      frame_index_(rig_.kinects.size(), 0),
+      person_clock_s_(world_.people.size(), 0.0) {
   if (config_.render_depth && !rig_.kinects.empty()) {
     renderer_ = std::make_unique<DepthRenderer>(world_, config_.render_threads);
   }
@@ -68,9 +69,10 @@ void Simulator::Step(SimOutput* out) {
   // Collision: accept a motion that keeps the footprint free or that moves out of an
   // overlap (a person may walk into a standing robot); otherwise the base stops.
   const Pose2D proposed = base_.Propose(dt);
-  const Contact now = collision_world_.Check({pose0.x, pose0.y}, robot_.footprint_radius_m, t1_s);
+  const double radius = robot_.footprint_radius_m;
+  const Contact now = collision_world_.Check({pose0.x, pose0.y}, radius, t1_s, &person_clock_s_);
   const Contact next =
-      collision_world_.Check({proposed.x, proposed.y}, robot_.footprint_radius_m, t1_s);
+      collision_world_.Check({proposed.x, proposed.y}, radius, t1_s, &person_clock_s_);
   const bool moving = std::abs(proposed.x - pose0.x) + std::abs(proposed.y - pose0.y) > 1e-12;
   const bool blocked = next.clearance_m < 0.0 && (next.clearance_m < now.clearance_m || !moving);
   if (blocked && (moving || now.clearance_m < 0.0)) {
@@ -92,6 +94,7 @@ void Simulator::Step(SimOutput* out) {
   }
   now_ns_ = t1;
   const Pose2D pose1 = base_.pose_world();
+  AdvancePeople(dt, pose1);
 
   if (renderer_) {
     const int sensors = static_cast<int>(rig_.kinects.size());
@@ -124,9 +127,30 @@ void Simulator::Step(SimOutput* out) {
   }
 }
 
+void Simulator::AdvancePeople(double dt_s, const Pose2D& robot_world) {
+  const Eigen::Vector2d robot(robot_world.x, robot_world.y);
+  const double radius = robot_.footprint_radius_m;
+  for (std::size_t i = 0; i < world_.people.size(); ++i) {
+    const Person& person = world_.people[i];
+    double& clock = person_clock_s_[i];
+    if (person.yields) {
+      const double next = collision_world_.PersonClearance(person, PersonAt(person, clock + dt_s),
+                                                           robot, radius);
+      if (next < config_.yield_clearance_m &&
+          next < collision_world_.PersonClearance(person, PersonAt(person, clock), robot,
+                                                  radius)) {
+        continue;  // Waits: the step would bring it nearer to the robot than it likes.
+      }
+    }
+    clock += dt_s;
+  }
+}
+
 SimFrame Simulator::Capture(int sensor, std::int64_t capture_ns, const Pose2D& pose_world) {
   if (moving_solids_ns_ != capture_ns) {
-    renderer_->SetMovingSolids(MovingSolidsAt(world_, NanosToSeconds(capture_ns)));
+    // People as they stand now (within one physics step of the capture instant).
+    renderer_->SetMovingSolids(
+        MovingSolidsAt(world_, NanosToSeconds(capture_ns), &person_clock_s_));
     moving_solids_ns_ = capture_ns;
   }
   const KinectMount& mount = rig_.kinects[sensor];

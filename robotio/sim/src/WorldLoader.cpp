@@ -198,6 +198,7 @@ class Parser {
     n.Read("start_s", &p.start_s, 0.0, 1e5);
     n.Read("loop", &p.loop);
     n.Read("screen", &p.screen);
+    n.Read("yields", &p.yields);
     for (ConfigNode& w : n.ChildList("path")) {
       Waypoint waypoint;
       waypoint.position = ReadPoint(w, "at");

@@ -166,7 +166,8 @@ std::vector<Solid> FixedSolids(const World& world) {
   return solids;
 }
 
-std::vector<Solid> MovingSolidsAt(const World& world, double t_s) {
+std::vector<Solid> MovingSolidsAt(const World& world, double t_s,
+                                  const std::vector<double>* person_clock_s) {
   std::vector<Solid> solids;
   for (const Door& d : world.doors) {
     const bool open = DoorOpenAt(d, t_s);
@@ -185,8 +186,13 @@ std::vector<Solid> MovingSolidsAt(const World& world, double t_s) {
       solids.push_back(s);
     }
   }
-  for (const Person& p : world.people) {
-    for (const Solid& s : PersonSolids(p, PersonAt(p, t_s))) solids.push_back(s);
+  for (std::size_t i = 0; i < world.people.size(); ++i) {
+    const double t = person_clock_s != nullptr && i < person_clock_s->size()
+                         ? (*person_clock_s)[i]
+                         : t_s;
+    for (const Solid& s : PersonSolids(world.people[i], PersonAt(world.people[i], t))) {
+      solids.push_back(s);
+    }
   }
   return solids;
 }

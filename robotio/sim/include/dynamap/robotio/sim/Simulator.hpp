@@ -14,6 +14,7 @@
 #include "dynamap/robotio/Pose2D.hpp"
 #include "dynamap/robotio/Readings.hpp"
 #include "dynamap/robotio/Rig.hpp"
+#include "dynamap/robotio/Time.hpp"
 #include "dynamap/robotio/TumTrajectory.hpp"
 #include "dynamap/robotio/sim/CollisionWorld.hpp"
 #include "dynamap/robotio/sim/DepthRenderer.hpp"
@@ -32,6 +33,8 @@ struct SimulatorConfig {
   bool stagger_kinects = true;     // Kinect i captures i/N of a frame period later, as
                                    // unsynchronised devices do.
   KinectModelConfig kinect;        // Depth error model of every Kinect.
+  double yield_clearance_m = 0.3;  // m, a person who yields does not step nearer than this
+                                   // to the robot's footprint; it waits until it may.
 };
 
 struct CollisionEvent {
@@ -73,10 +76,17 @@ class Simulator {
   [[nodiscard]] const Rig& rig() const { return rig_; }
   [[nodiscard]] const RobotConfig& robot() const { return robot_; }
   [[nodiscard]] int collision_count() const { return collisions_; }
+  // Seconds person i (World::people order) has spent waiting for the robot so far.
+  [[nodiscard]] double person_wait_s(std::size_t i) const {
+    return NanosToSeconds(now_ns_) - person_clock_s_.at(i);
+  }
   [[nodiscard]] std::uint64_t rays_cast() const;
 
  private:
   void Step(SimOutput* out);
+  // Walks every person on by dt, except those who yield and would come too near the robot
+  // standing at `robot_world`.
+  void AdvancePeople(double dt_s, const Pose2D& robot_world);
   [[nodiscard]] SimFrame Capture(int sensor, std::int64_t capture_ns, const Pose2D& pose_world);
 
   World world_;
@@ -94,6 +104,7 @@ class Simulator {
   std::vector<std::int64_t> frame_index_;  // Next frame number per Kinect.
   std::vector<SimFrame> pending_;          // Captured, not yet delivered.
   std::int64_t moving_solids_ns_ = -1;     // Time the renderer's moving geometry shows.
+  std::vector<double> person_clock_s_;    // Each person's own schedule time.
   bool in_contact_ = false;
   int collisions_ = 0;
 };

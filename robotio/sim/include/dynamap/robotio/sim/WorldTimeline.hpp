@@ -38,7 +38,10 @@ struct PersonState {
 // Walls, steps and furniture that never moves: the same for the whole run.
 [[nodiscard]] std::vector<Solid> FixedSolids(const World& world);
 // Doors, furniture with moves and people at time t_s, labelled against world.duration_s.
-[[nodiscard]] std::vector<Solid> MovingSolidsAt(const World& world, double t_s);
+// `person_clock_s`, when given, holds each person's own schedule time (behind t_s by the
+// time it spent waiting for the robot); otherwise every person is at t_s.
+[[nodiscard]] std::vector<Solid> MovingSolidsAt(const World& world, double t_s,
+                                                const std::vector<double>* person_clock_s = nullptr);
 // Doors and movable furniture in the placement they end the run in (static map truth).
 [[nodiscard]] std::vector<Solid> FinalMovableSolids(const World& world);
 
