@@ -102,6 +102,31 @@ Viewpoint FindViewpoint(const GridMap& map, const std::vector<double>& cost_to_g
   return best;
 }
 
+// The reachable cell within `max_cells` of `center` that sees it and is nearest to it: for
+// a region seen only through a doorway from afar, the place in front of the doorway (no
+// cell near the region itself is reachable yet).
+Viewpoint FindNearestViewpoint(const GridMap& map, const std::vector<double>& cost_to_go,
+                               GridIndex center, double max_cells) {
+  Viewpoint best;
+  double best_d2 = kInfinity;
+  const int r = static_cast<int>(std::ceil(max_cells));
+  for (int y = std::max(0, center.y - r); y <= std::min(map.height - 1, center.y + r); ++y) {
+    for (int x = std::max(0, center.x - r); x <= std::min(map.width - 1, center.x + r); ++x) {
+      const double dx = x - center.x;
+      const double dy = y - center.y;
+      const double d2 = dx * dx + dy * dy;
+      if (d2 > max_cells * max_cells || d2 >= best_d2) continue;
+      const double c = cost_to_go[static_cast<std::size_t>(y) * map.width + x];
+      if (c >= kInfinity) continue;
+      const GridIndex cell{x, y};
+      if (!ClearSight(map, cell, center)) continue;
+      best = {true, cell, c};
+      best_d2 = d2;
+    }
+  }
+  return best;
+}
+
 // A start cell for the cost-to-go: the robot's, or the nearest free one when the robot
 // stands inside the inflated zone (after a collision-guard stop, say).
 GridIndex FreeCellNear(const TraversalGrid& grid, GridIndex robot, int radius) {
@@ -170,6 +195,10 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
                                  min_view + config_.viewpoint_radius_m / res);
     if (!vp.found && min_view > 0.0) {
       vp = FindViewpoint(map, cost_to_go, region.center, 0.0, config_.viewpoint_radius_m / res);
+    }
+    if (!vp.found) {
+      // Seen from afar through a doorway: go as near as the known floor allows and look.
+      vp = FindNearestViewpoint(map, cost_to_go, region.center, config_.sensor_range_m / res);
     }
     if (!vp.found) {
       ++decision.unreachable_regions;

@@ -75,6 +75,16 @@ TEST(ExplorationMission, MapsAreSavedPeriodicallyWhileTheMissionRuns) {
   EXPECT_FALSE(report->completed);
   EXPECT_LT(report->mission_time_s, 60.0);
   EXPECT_GT(report->wall_time_s, 0.0);
+  // Every worker's CPU time is accounted for, and no more than the machine could give.
+  const MissionCpu& cpu = report->cpu;
+  EXPECT_GT(cpu.simulation_s, 0.0);
+  EXPECT_GT(cpu.mapping_s, 0.0);
+  EXPECT_GT(cpu.planning_s, 0.0);
+  EXPECT_GT(cpu.control_s, 0.0);
+  EXPECT_GE(cpu.other_s, 0.0);
+  const double total = cpu.simulation_s + cpu.mapping_s + cpu.planning_s + cpu.control_s +
+                       cpu.other_s;
+  EXPECT_LE(total, report->wall_time_s * std::thread::hardware_concurrency() * 1.05 + 0.1);
 }
 
 // The whole mission, frames placed at the true poses (in-mission SLAM at this image size

@@ -168,6 +168,28 @@ TEST(TargetPlanner, FrontierViewpointsKeepTheFloorBlindDistance) {
   EXPECT_LT(std::hypot(near.chosen.viewpoint.x - 45, near.chosen.viewpoint.y - 24) * kRes, 0.5);
 }
 
+TEST(TargetPlanner, ARoomSeenFromAfarThroughADoorwayIsLookedIntoFromInFrontOfIt) {
+  // A known corridor (y 10..19) and, through a doorway in its north wall, a strip of room
+  // floor seen from afar (x 38..45, y 21..50) in unknown space. The doorway (0.2 m) does not
+  // let the robot through yet, so no cell near the room's frontier is reachable: the
+  // viewpoint is the corridor cell nearest to it that sees it, in front of the doorway.
+  GridMap map(80, 60, kRes, CellState::kUnknown);
+  Fill(&map, 0, 9, 79, 20, CellState::kObstacle);
+  Fill(&map, 1, 10, 78, 19, CellState::kNavigable);
+  Fill(&map, 40, 20, 41, 20, CellState::kNavigable);  // The doorway.
+  Fill(&map, 38, 21, 45, 50, CellState::kNavigable);  // Room floor seen through it.
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  ASSERT_TRUE(grid.Blocked({40, 20}) && grid.Blocked({41, 20}));
+  const TargetDecision d =
+      TargetPlanner(NoInspection(), kRes).Plan(map, grid, {10, 15}, {10, 15}, nullptr, 0.0);
+  ASSERT_EQ(d.kind, TargetKind::kFrontier);
+  EXPECT_GT(d.chosen.region_center.y, 21);  // A frontier of the room, ...
+  EXPECT_FALSE(grid.Blocked(d.chosen.viewpoint));
+  EXPECT_LE(d.chosen.viewpoint.y, 19);       // ... looked at from the corridor ...
+  EXPECT_NEAR(d.chosen.viewpoint.x, 41, 3);  // ... right in front of the doorway.
+  EXPECT_GT(d.chosen.gain, 0.0);
+}
+
 TEST(Visibility, CellsNearerThanTheMinimumRangeAreNotSeen) {
   GridMap map(60, 60, kRes, CellState::kUnknown);
   ViewCone cone;

@@ -129,6 +129,13 @@ robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra
       {"map_insert_median_ms", r.insert_median_ms},
       {"map_insert_p95_ms", r.insert_p95_ms},
       {"wall_time_s", r.wall_time_s},
+      {"simulated_s_per_wall_s", r.wall_time_s > 0.0 ? r.mission_time_s / r.wall_time_s : 0.0},
+      {"cpu_s",
+       {{"simulation", r.cpu.simulation_s},
+        {"mapping", r.cpu.mapping_s},
+        {"planning", r.cpu.planning_s},
+        {"control", r.cpu.control_s},
+        {"other", r.cpu.other_s}}},
       {"files", r.files},
   };
   if (!extra_json_fields.empty()) j.update(nlohmann::json::parse(extra_json_fields));

@@ -162,13 +162,24 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(Missio
 void MissionRuntime::Start() {
   if (!mediator_->control.Start()) return;
   started_ = std::chrono::steady_clock::now();
+  process_cpu_at_start_s_ = ProcessCpuSeconds();
   threads_.emplace_back([this] {
     driver_->Run();
     mediator_->WakeAll();  // Time limit or stop: everyone leaves.
+    cpu_.simulation_s = ThreadCpuSeconds();
   });
-  threads_.emplace_back([this] { mapping_->Run(); });
-  threads_.emplace_back([this] { planning_->Run(); });
-  threads_.emplace_back([this] { control_->Run(); });
+  threads_.emplace_back([this] {
+    mapping_->Run();
+    cpu_.mapping_s = ThreadCpuSeconds();
+  });
+  threads_.emplace_back([this] {
+    planning_->Run();
+    cpu_.planning_s = ThreadCpuSeconds();
+  });
+  threads_.emplace_back([this] {
+    control_->Run();
+    cpu_.control_s = ThreadCpuSeconds();
+  });
   threads_.emplace_back([this] { Monitor(); });
 }
 
@@ -195,6 +206,9 @@ void MissionRuntime::Wait() {
   if (started_ != std::chrono::steady_clock::time_point{}) {
     wall_time_s_ =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    const double process = ProcessCpuSeconds() - process_cpu_at_start_s_;
+    cpu_.other_s = std::max(0.0, process - cpu_.simulation_s - cpu_.mapping_s -
+                                     cpu_.planning_s - cpu_.control_s);
   }
   mediator_->control.MarkFinished();
 }
@@ -240,6 +254,7 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   r.completed = m.counters.returned_to_start.load();
   r.mission_time_s = robotio::NanosToSeconds(m.clock.now_ns());
   r.wall_time_s = wall_time_s_;
+  r.cpu = cpu_;
   r.collisions = m.counters.collisions.load();
   r.frames_delivered = m.frames.delivered();
   r.frames_dropped = m.frames.dropped();

@@ -9,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "dynamap/app/runtime/CpuTime.hpp"
 #include "dynamap/app/runtime/MissionConfig.hpp"
 #include "dynamap/app/runtime/MissionSnapshot.hpp"
 #include "dynamap/robotio/Expected.hpp"
@@ -69,6 +70,8 @@ class MissionRuntime {
   bool joined_ = false;
   std::chrono::steady_clock::time_point started_{};  // Wall clock at Start().
   double wall_time_s_ = 0.0;                          // Start() to the workers' end.
+  double process_cpu_at_start_s_ = 0.0;
+  MissionCpu cpu_;  // Each worker writes its share as its thread ends (read after joining).
 };
 
 }  // namespace dynamap::app::runtime

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamap/app/runtime/CpuTime.hpp"
 #include "dynamap/app/runtime/RunControl.hpp"
 #include "dynamap/planning/GridMap.hpp"
 #include "dynamap/planning/TargetPlanner.hpp"
@@ -63,6 +64,7 @@ struct MissionReport {
   double insert_median_ms = 0.0;
   double insert_p95_ms = 0.0;
   double wall_time_s = 0.0;
+  MissionCpu cpu;                       // Per-thread CPU seconds while the mission ran.
   std::vector<std::string> files;       // Written into the output folder.
 };
 
