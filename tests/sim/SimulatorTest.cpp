@@ -171,6 +171,28 @@ TEST(Simulator, DrivingIntoAWallIsACollisionWithoutPenetration) {
   EXPECT_EQ(simulator.collision_count(), 1);
 }
 
+TEST(Simulator, DoorwaysAreAsWideAsTheGapBetweenWallEndsAndCornersAreClosed) {
+  // Two collinear walls leave a 0.9 m doorway; the east one turns a corner at x = 5.
+  const World world = testing::MustParse(
+      "name: doorway\n"
+      "floor: {min: [-6, -4], max: [6, 4]}\n"
+      "robot_start: {x: 0.45, y: -2, yaw_deg: 90}\n"
+      "walls:\n"
+      "  - {id: west, from: [-5, 0], to: [0, 0], thickness: 0.12}\n"
+      "  - {id: east, from: [0.9, 0], to: [5, 0], thickness: 0.12}\n"
+      "  - {id: corner, from: [5, 0], to: [5, 3], thickness: 0.12}\n");
+  const Solid west = WallSolid(world, 0);
+  const Solid east = WallSolid(world, 1);
+  EXPECT_NEAR(west.size.x(), 5.0, 1e-9);          // Both ends free.
+  EXPECT_NEAR(east.size.x(), 4.1 + 0.06, 1e-9);   // Overlaps the corner wall only.
+  EXPECT_NEAR(east.pose.x, (0.9 + 5.06) / 2.0, 1e-9);
+  const CollisionWorld collisions(world, 1.0);
+  // A 0.3 m footprint in the middle of the doorway has 0.15 m on either side.
+  EXPECT_NEAR(collisions.Check({0.45, 0.0}, 0.3, 0.0).clearance_m, 0.15, 1e-9);
+  // The corner is closed: the outside of the joint is wall.
+  EXPECT_LT(collisions.Check({5.04, -0.04}, 0.001, 0.0).clearance_m, 0.0);
+}
+
 // A person whose path runs through the standing robot: x from 3 m to -3 m along y = 0.
 std::string WalkerThroughTheRobot(const std::string& yields) {
   return testing::WallWorldYaml(

@@ -143,12 +143,8 @@ void DrawObjects(const World& world, Canvas& canvas) {
       }
     }
   }
-  for (const Wall& w : world.walls) {
-    const Eigen::Vector2d d = (w.to - w.from).normalized();
-    Solid s;
-    s.pose = {(w.from.x() + w.to.x()) / 2.0, (w.from.y() + w.to.y()) / 2.0, std::atan2(d.y(), d.x())};
-    s.size = {(w.to - w.from).norm() + w.thickness, w.thickness, w.height};
-    canvas.FillSolid(s, kWall, kWall);
+  for (std::size_t i = 0; i < world.walls.size(); ++i) {
+    canvas.FillSolid(WallSolid(world, i), kWall, kWall);
   }
   for (const Door& d : world.doors) {
     for (const bool open : {false, true}) {

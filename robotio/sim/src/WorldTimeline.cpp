@@ -1,5 +1,6 @@
 #include "dynamap/robotio/sim/WorldTimeline.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dynamap::robotio::sim {
@@ -147,15 +148,45 @@ std::vector<Solid> PersonSolids(const Person& person, const PersonState& state) 
   return solids;
 }
 
+namespace {
+
+double SegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                       const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+// Whether the end `p` of wall `self` meets another wall (a corner or a T-junction).
+bool MeetsAnotherWall(const World& world, std::size_t self, const Eigen::Vector2d& p) {
+  for (std::size_t i = 0; i < world.walls.size(); ++i) {
+    if (i == self) continue;
+    const Wall& o = world.walls[i];
+    if (SegmentDistance(p, o.from, o.to) <= (o.thickness + world.walls[self].thickness) / 2.0) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+Solid WallSolid(const World& world, std::size_t i) {
+  const Wall& w = world.walls.at(i);
+  const Eigen::Vector2d d = w.to - w.from;
+  const Eigen::Vector2d along =
+      d.norm() > 0.0 ? Eigen::Vector2d(d.normalized()) : Eigen::Vector2d::UnitX();
+  const double back = MeetsAnotherWall(world, i, w.from) ? w.thickness / 2.0 : 0.0;
+  const double ahead = MeetsAnotherWall(world, i, w.to) ? w.thickness / 2.0 : 0.0;
+  const Eigen::Vector2d mid = (w.from + w.to) / 2.0 + along * (ahead - back) / 2.0;
+  return LocalBox({mid.x(), mid.y(), std::atan2(along.y(), along.x())}, 0.0, 0.0, 0.0,
+                  d.norm() + back + ahead, w.thickness, w.height, w.index);
+}
+
 std::vector<Solid> FixedSolids(const World& world) {
   std::vector<Solid> solids;
-  for (const Wall& w : world.walls) {
-    const Eigen::Vector2d mid = (w.from + w.to) / 2.0;
-    const Eigen::Vector2d d = w.to - w.from;
-    // Walls overlap by half their thickness at corners so there are no gaps.
-    solids.push_back(LocalBox({mid.x(), mid.y(), std::atan2(d.y(), d.x())}, 0.0, 0.0, 0.0,
-                              d.norm() + w.thickness, w.thickness, w.height, w.index));
-  }
+  for (std::size_t i = 0; i < world.walls.size(); ++i) solids.push_back(WallSolid(world, i));
   for (const Step& s : world.steps) {
     solids.push_back(LocalBox(s.pose, 0.0, 0.0, 0.0, s.size.x(), s.size.y(), s.height, s.index));
   }

@@ -35,6 +35,10 @@ struct PersonState {
 [[nodiscard]] std::vector<Solid> FurnitureSolids(const Furniture& furniture, const Pose2D& pose);
 [[nodiscard]] std::vector<Solid> PersonSolids(const Person& person, const PersonState& state);
 
+// Wall i as a box. Walls overlap by half their thickness where they meet another wall, so
+// corners have no gaps; a free end (a doorway's side) stops at its point, so a doorway is
+// as wide as the world file says.
+[[nodiscard]] Solid WallSolid(const World& world, std::size_t i);
 // Walls, steps and furniture that never moves: the same for the whole run.
 [[nodiscard]] std::vector<Solid> FixedSolids(const World& world);
 // Doors, furniture with moves and people at time t_s, labelled against world.duration_s.
