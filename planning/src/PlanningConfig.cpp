@@ -37,6 +37,7 @@ void ReadTargets(robotio::ConfigNode& n, TargetPlannerConfig* c) {
   n.Read("home_tolerance_m", &c->home_tolerance_m, 0.0, 10.0);
   if (auto b = n.OptionalChild("blacklist")) {
     b->Read("duration_s", &c->blacklist.duration_s, 0.0, kHuge);
+    b->Read("max_duration_s", &c->blacklist.max_duration_s, 0.0, kHuge);
     b->Read("radius_m", &c->blacklist.radius_m, 0.0, 10.0);
     b->Read("max_failures", &c->blacklist.max_failures, 1, 100);
   }

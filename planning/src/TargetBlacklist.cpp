@@ -1,5 +1,8 @@
 #include "dynamap/planning/TargetBlacklist.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace dynamap::planning {
 
 bool TargetBlacklist::Near(GridIndex a, GridIndex b) const {
@@ -8,28 +11,33 @@ bool TargetBlacklist::Near(GridIndex a, GridIndex b) const {
   return dx * dx + dy * dy <= radius_cells_ * radius_cells_;
 }
 
+void TargetBlacklist::Ban(Entry& e, double now_s) const {
+  const double duration =
+      std::min(config_.max_duration_s, config_.duration_s * std::pow(2.0, e.times));
+  e.until_s = now_s + duration;
+  e.failures = 0;
+  ++e.times;
+}
+
 void TargetBlacklist::ReportFailure(GridIndex cell, double now_s) {
   for (Entry& e : entries_) {
     if (!Near(e.cell, cell)) continue;
-    if (++e.failures >= config_.max_failures) {
-      e.until_s = now_s + config_.duration_s;
-      e.failures = 0;
-    }
+    if (++e.failures >= config_.max_failures) Ban(e, now_s);
     return;
   }
-  entries_.push_back({cell, 1, -1.0});
-  if (config_.max_failures <= 1) Blacklist(cell, now_s);
+  entries_.push_back({cell, 1, -1.0, 0});
+  if (config_.max_failures <= 1) Ban(entries_.back(), now_s);
 }
 
 void TargetBlacklist::Blacklist(GridIndex cell, double now_s) {
   for (Entry& e : entries_) {
     if (Near(e.cell, cell)) {
-      e.until_s = now_s + config_.duration_s;
-      e.failures = 0;
+      if (now_s >= e.until_s) Ban(e, now_s);  // Already banned: the ban stands as it is.
       return;
     }
   }
-  entries_.push_back({cell, 0, now_s + config_.duration_s});
+  entries_.push_back({cell, 0, -1.0, 0});
+  Ban(entries_.back(), now_s);
 }
 
 bool TargetBlacklist::IsBlacklisted(GridIndex cell, double now_s) const {

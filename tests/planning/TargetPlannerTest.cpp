@@ -91,6 +91,28 @@ TEST(TargetPlanner, BlacklistedTargetsAreSkippedUntilTheyExpire) {
   EXPECT_EQ(planner.Plan(map, grid, {15, 24}, {15, 24}, nullptr, later).cell, first.cell);
 }
 
+TEST(TargetBlacklist, APlaceThatKeepsFailingIsBlacklistedLongerEachTime) {
+  TargetBlacklistConfig config;
+  config.duration_s = 10.0;
+  config.max_duration_s = 30.0;
+  config.max_failures = 1;
+  TargetBlacklist blacklist(config, kRes);
+  const GridIndex place{20, 20};
+  blacklist.ReportFailure(place, 0.0);
+  EXPECT_TRUE(blacklist.IsBlacklisted(place, 9.9));
+  EXPECT_FALSE(blacklist.IsBlacklisted(place, 10.0));
+  blacklist.ReportFailure(place, 10.0);  // Again: 20 s.
+  EXPECT_TRUE(blacklist.IsBlacklisted(place, 29.9));
+  EXPECT_FALSE(blacklist.IsBlacklisted(place, 30.0));
+  blacklist.Blacklist(place, 30.0);      // And again: 40 s, capped at 30 s.
+  blacklist.Blacklist(place, 35.0);      // While banned, the ban stands as it is.
+  EXPECT_TRUE(blacklist.IsBlacklisted(place, 59.9));
+  EXPECT_FALSE(blacklist.IsBlacklisted(place, 60.0));
+  // Another place starts again at the base duration.
+  blacklist.Blacklist({40, 20}, 60.0);
+  EXPECT_FALSE(blacklist.IsBlacklisted({40, 20}, 70.0));
+}
+
 TEST(TargetPlanner, UnreachableFrontierIsNotATarget) {
   GridMap map = RoomWithOpenings();
   Fill(&map, 40, 10, 40, 39, CellState::kObstacle);  // Wall off the east part.

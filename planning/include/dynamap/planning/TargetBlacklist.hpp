@@ -9,7 +9,10 @@
 namespace dynamap::planning {
 
 struct TargetBlacklistConfig {
-  double duration_s = 60.0;  // s a place stays blacklisted.
+  double duration_s = 60.0;  // s a place stays blacklisted the first time; each later
+                             // time twice as long as the one before, up to the maximum,
+                             // so a place that keeps failing stops luring the robot back.
+  double max_duration_s = 600.0;
   double radius_m = 0.5;     // m, targets this close to a blacklisted place count as it.
   int max_failures = 2;      // Failed approaches before a place is blacklisted.
 };
@@ -29,7 +32,9 @@ class TargetBlacklist {
     GridIndex cell;
     int failures = 0;
     double until_s = -1.0;  // Blacklisted while now < until_s.
+    int times = 0;          // How often it has been blacklisted.
   };
+  void Ban(Entry& e, double now_s) const;
   [[nodiscard]] bool Near(GridIndex a, GridIndex b) const;
 
   TargetBlacklistConfig config_;
