@@ -32,4 +32,19 @@ std::vector<Eigen::Vector2f> TouchedColumns(const robotio::DepthRays& rays, cons
   return columns;
 }
 
+std::vector<Eigen::Vector2f> HitColumns(const robotio::DepthRays& rays, const GridMap& area,
+                                        double min_z_m, double max_z_m) {
+  std::vector<std::uint8_t> hit(area.cells.size(), 0);
+  std::vector<Eigen::Vector2f> columns;
+  for (std::size_t i = 0; i < rays.ends.size(); ++i) {
+    const Eigen::Vector3f& end = rays.ends[i];
+    if (!rays.hit[i] || end.z() <= min_z_m || end.z() >= max_z_m) continue;
+    const GridIndex c = area.CellAt(end.x(), end.y());
+    if (!area.Contains(c) || hit[area.Index(c)] != 0) continue;
+    hit[area.Index(c)] = 1;
+    columns.emplace_back(static_cast<float>(area.CenterX(c.x)), static_cast<float>(area.CenterY(c.y)));
+  }
+  return columns;
+}
+
 }  // namespace dynamap::planning

@@ -79,6 +79,15 @@ std::vector<int> MapProjector::Update(const VoxelMapView& view,
   return Reproject(view, cells, now_s);
 }
 
+void MapProjector::Refresh(const std::vector<Eigen::Vector2f>& hit_xy, double now_s) {
+  for (const Eigen::Vector2f& p : hit_xy) {
+    const GridIndex c = map_.CellAt(p.x(), p.y());
+    if (!map_.Contains(c)) continue;
+    double& since = dynamic_since_s_[map_.Index(c)];
+    if (!std::isnan(since)) since = now_s;
+  }
+}
+
 std::vector<int> MapProjector::ExpireDynamicObstacles(const VoxelMapView& view, double now_s) {
   if (config_.dynamic_obstacle_ttl_s <= 0.0) return {};
   std::vector<int> expired;

@@ -153,7 +153,7 @@ TEST(MapProjection, DynamicOnlyObstaclesExpireButStaticOnesStay) {
   (void)projector.Update(world, touched, 100.0);
   EXPECT_EQ(projector.map().At(person), CellState::kObstacle);
   EXPECT_TRUE(projector.ExpireDynamicObstacles(world, 105.0).empty());
-  (void)projector.Update(world, touched, 108.0);  // Seen again: still the first sighting.
+  (void)projector.Update(world, touched, 108.0);  // Passed over, not hit: no news.
   EXPECT_EQ(projector.map().At(person), CellState::kObstacle);
   const std::vector<int> released = projector.ExpireDynamicObstacles(world, 110.5);
   ASSERT_EQ(released.size(), 1u);
@@ -166,6 +166,35 @@ TEST(MapProjection, DynamicOnlyObstaclesExpireButStaticOnesStay) {
   world.dynamic_boxes.push_back(Box(3.0f, 2.0f, 0.0f, 3.4f, 2.4f, 1.8f));
   (void)projector.Update(world, touched, 121.0);
   EXPECT_EQ(projector.map().At(person), CellState::kObstacle);
+}
+
+TEST(MapProjection, ADynamicObstacleThatScansKeepHittingStays) {
+  // A door closed in front of the robot is dynamic (free, then occupied: Table 4.1); while
+  // scans keep hitting it, it stays an obstacle, and it expires only once out of sight.
+  BoxWorld world;
+  ProjectionConfig config;
+  config.dynamic_obstacle_ttl_s = 10.0;
+  MapProjector projector(Area(), config);
+  projector.ProjectAll(world);
+  world.dynamic_boxes.push_back(Box(3.0f, 2.0f, 0.0f, 3.9f, 2.05f, 2.0f));  // Closed door.
+  const std::vector<Eigen::Vector2f> door{{3.225f, 2.025f}};
+  const GridIndex cell = projector.map().CellAt(3.225, 2.025);
+  (void)projector.Update(world, door, 100.0);
+  ASSERT_EQ(projector.map().At(cell), CellState::kObstacle);
+  for (double t = 101.0; t <= 130.0; t += 1.0) {
+    projector.Refresh(door, t);
+    (void)projector.Update(world, door, t);
+    (void)projector.ExpireDynamicObstacles(world, t);
+    ASSERT_EQ(projector.map().At(cell), CellState::kObstacle) << "at t = " << t;
+  }
+  // Out of sight: released ten seconds after the last hit ...
+  EXPECT_TRUE(projector.ExpireDynamicObstacles(world, 139.0).empty());
+  EXPECT_EQ(projector.ExpireDynamicObstacles(world, 140.5).size(), 1u);
+  EXPECT_EQ(projector.map().At(cell), CellState::kNavigable);
+  // ... and an obstacle again as soon as a scan hits it.
+  projector.Refresh(door, 150.0);
+  (void)projector.Update(world, door, 150.0);
+  EXPECT_EQ(projector.map().At(cell), CellState::kObstacle);
 }
 
 }  // namespace

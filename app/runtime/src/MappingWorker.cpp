@@ -71,6 +71,10 @@ void MappingWorker::Score(const CapturedFrame& frame, const robotio::KinectMount
   }
   const std::vector<Eigen::Vector2f> columns = planning::TouchedColumns(rays, projector_.map());
   touched_.insert(touched_.end(), columns.begin(), columns.end());
+  const std::vector<Eigen::Vector2f> hits =
+      planning::HitColumns(rays, projector_.map(), config_.projection.step_height_m,
+                           config_.projection.robot_height_m);
+  hit_.insert(hit_.end(), hits.begin(), hits.end());
   mediator_.pose_fix.Set({frame.depth.stamp_ns, T_map_base, odometry});
   mediator_.AddEstimate(robotio::ToStampedPose(frame.depth.stamp_ns, T_map_base));
   mediator_.AddOdometryEstimate(robotio::ToStampedPose(frame.depth.stamp_ns, odometry));
@@ -122,9 +126,11 @@ void MappingWorker::Process(const std::vector<CapturedFrame>& batch) {
 void MappingWorker::Reproject() {
   const planning::DualMapView view(map());
   const double now_s = robotio::NanosToSeconds(mediator_.clock.now_ns());
+  projector_.Refresh(hit_, now_s);
   (void)projector_.Update(view, touched_, now_s);
   (void)projector_.ExpireDynamicObstacles(view, now_s);
   touched_.clear();
+  hit_.clear();
   mediator_.grid.Set(std::make_shared<const planning::GridMap>(projector_.map()));
 }
 

@@ -44,4 +44,10 @@ class DualMapView : public VoxelMapView {
 [[nodiscard]] std::vector<Eigen::Vector2f> TouchedColumns(const robotio::DepthRays& rays,
                                                           const GridMap& area);
 
+// Centres of the grid columns where rays of one scan ended on something between `min_z_m`
+// and `max_z_m` (map frame), each once: what MapProjector::Refresh needs.
+[[nodiscard]] std::vector<Eigen::Vector2f> HitColumns(const robotio::DepthRays& rays,
+                                                      const GridMap& area, double min_z_m,
+                                                      double max_z_m);
+
 }  // namespace dynamap::planning

@@ -30,10 +30,12 @@ struct ProjectionConfig {
   double max_floor_gap_m = 0.15; // m, unknown gaps this narrow inside seen floor are floor
                                  // for the planner (CloseFloorGaps); 0 keeps them unknown.
   double dynamic_obstacle_ttl_s = 10.0;  // s a column blocked only by the dynamic map stays
-                                 // an obstacle: a person's trace stays in the dynamic map
-                                 // until seen free, and one walking to and fro would wall
-                                 // off a room for good. The person actually in the way is
-                                 // the collision guard's. 0 = dynamic obstacles never expire.
+                                 // an obstacle after a scan last hit something in it: a
+                                 // person's trace stays in the dynamic map until seen free,
+                                 // and one walking to and fro would wall off a room for
+                                 // good, while a door closed in front of the robot (dynamic
+                                 // by Table 4.1) is hit by every scan that sees it and stays.
+                                 // 0 = dynamic obstacles never expire.
 };
 
 struct ColumnProjection {
@@ -65,6 +67,9 @@ class MapProjector {
   // touched) at time `now_s`; returns the indices of cells whose state changed.
   std::vector<int> Update(const VoxelMapView& view, const std::vector<Eigen::Vector2f>& touched_xy,
                           double now_s = 0.0);
+  // A scan hit something between step and robot height in these columns at `now_s`: those
+  // blocked by the dynamic map alone are still there (their time starts again).
+  void Refresh(const std::vector<Eigen::Vector2f>& hit_xy, double now_s);
   // Releases columns blocked only by the dynamic map for longer than the configured time
   // (to what lies under them); returns the indices of cells whose state changed.
   std::vector<int> ExpireDynamicObstacles(const VoxelMapView& view, double now_s);
@@ -77,7 +82,7 @@ class MapProjector {
 
   GridMap map_;
   ProjectionConfig config_;
-  // Per cell: when it became an obstacle by the dynamic map alone (NaN when it is not).
+  // Per cell: when a scan last saw it blocked by the dynamic map alone (NaN when it is not).
   std::vector<double> dynamic_since_s_;
   std::vector<int> dynamic_cells_;  // Cells with a time in dynamic_since_s_.
 };

@@ -68,6 +68,7 @@ class MappingWorker {
   mapping::PointAccuracyCounter accuracy_;
   std::unordered_set<std::uint64_t> inspected_voxels_;
   std::vector<Eigen::Vector2f> touched_;  // Columns to re-project after this batch.
+  std::vector<Eigen::Vector2f> hit_;      // Columns where this batch hit an obstacle.
   std::vector<double> insert_ms_;
   std::int64_t last_save_ns_ = 0;
 };
