@@ -58,5 +58,21 @@ TEST(DualMapProjection, TouchedColumnsFollowTheRaysFootprint) {
   for (const Eigen::Vector2f& c : columns) EXPECT_NEAR(c.y(), 0.05f, 1e-6f);
 }
 
+TEST(DualMapProjection, HitColumnsAreWhereRaysEndedOnAnObstacle) {
+  GridMap area(40, 40, 0.1);
+  robotio::DepthRays rays;
+  rays.origin = Eigen::Vector3f(0.05f, 0.05f, 0.5f);
+  rays.ends = {Eigen::Vector3f(1.05f, 0.05f, 0.0f),    // Floor: below the step height.
+               Eigen::Vector3f(2.05f, 0.05f, 0.5f),    // A door.
+               Eigen::Vector3f(2.07f, 0.03f, 0.6f),    // The same door column again.
+               Eigen::Vector3f(3.05f, 0.05f, 1.5f),    // Above the robot.
+               Eigen::Vector3f(3.05f, 1.05f, 0.5f)};   // Cut at max range: no hit.
+  rays.hit = {true, true, true, true, false};
+  const std::vector<Eigen::Vector2f> columns = HitColumns(rays, area, 0.08, 0.9);
+  ASSERT_EQ(columns.size(), 1u);
+  EXPECT_NEAR(columns[0].x(), 2.05f, 1e-6f);
+  EXPECT_NEAR(columns[0].y(), 0.05f, 1e-6f);
+}
+
 }  // namespace
 }  // namespace dynamap::planning
