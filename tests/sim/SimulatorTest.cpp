@@ -164,10 +164,16 @@ TEST(Simulator, DrivingIntoAWallIsACollisionWithoutPenetration) {
     EXPECT_LE(p.pose.translation().x() + robot.footprint_radius_m, 2.0 + 1e-9);
   }
   EXPECT_GT(simulator.TruePose().x + robot.footprint_radius_m, 1.95);  // Stopped at the wall.
+  // Against the wall it can still turn on the spot (its footprint is a circle).
+  const Pose2D stopped = simulator.TruePose();
+  simulator.SetCommand({0, 0.0, 1.0});
+  (void)simulator.Advance(1.0);
+  EXPECT_GT(simulator.TruePose().theta - stopped.theta, 0.5);
+  EXPECT_NEAR(simulator.TruePose().x, stopped.x, 1e-9);
   // Backing off is allowed.
   simulator.SetCommand({0, -0.5, 0.0});
   (void)simulator.Advance(1.0);
-  EXPECT_LT(simulator.TruePose().x, 1.4);
+  EXPECT_LT(simulator.TruePose().x, stopped.x - 0.1);
   EXPECT_EQ(simulator.collision_count(), 1);
 }
 
@@ -212,6 +218,13 @@ TEST(Simulator, PeopleWaitForTheRobotInsteadOfWalkingIntoIt) {
   // It stopped at the yield clearance, about 2.1 s into its 6 s walk.
   const double stop_distance = robot.footprint_radius_m + 0.25 + config.yield_clearance_m;
   EXPECT_NEAR(simulator.person_wait_s(0), 6.0 - (3.0 - stop_distance), 0.05);
+  // The robot drives 0.3 m towards the person: it backs off the way it came, no contact.
+  simulator.SetCommand({0, 0.3, 0.0});
+  (void)simulator.Advance(1.5);
+  simulator.SetCommand({0, 0.0, 0.0});
+  const double before_approach = simulator.person_wait_s(0);
+  EXPECT_GT(before_approach - (6.0 - (3.0 - stop_distance)), 1.5 + 0.15);  // Walked back.
+  EXPECT_EQ(simulator.collision_count(), 0);
   const double waited = simulator.person_wait_s(0);
   // The robot drives out of the way (along +y); the person walks on and waits no longer.
   simulator.SetCommand({0, 0.0, 1.5});

@@ -66,17 +66,23 @@ void Simulator::Step(SimOutput* out) {
   const Pose2D pose0 = base_.pose_world();
   const double t1_s = NanosToSeconds(t1);
 
-  // Collision: accept a motion that keeps the footprint free or that moves out of an
-  // overlap (a person may walk into a standing robot); otherwise the base stops.
+  // Collision: accept a motion that keeps the footprint free, that does not push it deeper
+  // into an overlap (a person may walk into a standing robot) or that only turns it (the
+  // footprint is a circle); otherwise the base stops.
   const Pose2D proposed = base_.Propose(dt);
   const double radius = robot_.footprint_radius_m;
   const Contact now = collision_world_.Check({pose0.x, pose0.y}, radius, t1_s, &person_clock_s_);
   const Contact next =
       collision_world_.Check({proposed.x, proposed.y}, radius, t1_s, &person_clock_s_);
   const bool moving = std::abs(proposed.x - pose0.x) + std::abs(proposed.y - pose0.y) > 1e-12;
-  const bool blocked = next.clearance_m < 0.0 && (next.clearance_m < now.clearance_m || !moving);
-  if (blocked && (moving || now.clearance_m < 0.0)) {
+  const bool blocked = moving && next.clearance_m < 0.0 && next.clearance_m < now.clearance_m;
+  const bool touching = now.clearance_m < 0.0 || (moving && next.clearance_m < 0.0);
+  if (blocked) {
     base_.Halt();
+  } else {
+    base_.Move(dt);
+  }
+  if (touching) {
     if (!in_contact_) {
       in_contact_ = true;
       ++collisions_;
@@ -88,9 +94,8 @@ void Simulator::Step(SimOutput* out) {
       event.pose = TruePose();
       out->collisions.push_back(event);
     }
-  } else {
-    base_.Move(dt);
-    if (next.clearance_m > kContactRelease) in_contact_ = false;
+  } else if (next.clearance_m > kContactRelease) {
+    in_contact_ = false;
   }
   now_ns_ = t1;
   const Pose2D pose1 = base_.pose_world();
@@ -134,12 +139,18 @@ void Simulator::AdvancePeople(double dt_s, const Pose2D& robot_world) {
     const Person& person = world_.people[i];
     double& clock = person_clock_s_[i];
     if (person.yields) {
-      const double next = collision_world_.PersonClearance(person, PersonAt(person, clock + dt_s),
-                                                           robot, radius);
-      if (next < config_.yield_clearance_m &&
-          next < collision_world_.PersonClearance(person, PersonAt(person, clock), robot,
-                                                  radius)) {
-        continue;  // Waits: the step would bring it nearer to the robot than it likes.
+      const auto clearance = [&](double t) {
+        return collision_world_.PersonClearance(person, PersonAt(person, t), robot, radius);
+      };
+      const double here = clearance(clock);
+      const double ahead = clearance(clock + dt_s);
+      if (ahead < config_.yield_clearance_m && ahead < here) {
+        // The step would bring it nearer to the robot than it likes. With the robot already
+        // that near (it came closer), it backs off the way it came; otherwise it waits.
+        if (here < config_.yield_clearance_m && clock >= dt_s && clearance(clock - dt_s) > here) {
+          clock -= dt_s;
+        }
+        continue;
       }
     }
     clock += dt_s;
