@@ -16,6 +16,16 @@ void SurfaceCoverage::Observe(const GridMap& map, const robotio::Pose2D& pose) {
   }
 }
 
+bool SurfaceCoverage::InspectedNear(const GridMap& map, GridIndex c) const {
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      const GridIndex n{c.x + dx, c.y + dy};
+      if (map.Contains(n) && Inspected(map.Index(n))) return true;
+    }
+  }
+  return false;
+}
+
 bool SurfaceCoverage::IsSurface(const GridMap& map, GridIndex c) {
   if (!map.Contains(c) || map.At(c) != CellState::kObstacle) return false;
   const GridIndex around[4] = {{c.x + 1, c.y}, {c.x - 1, c.y}, {c.x, c.y + 1}, {c.x, c.y - 1}};
@@ -31,7 +41,7 @@ double SurfaceCoverage::Fraction(const GridMap& map) const {
   for (int i = 0; i < static_cast<int>(map.cells.size()); ++i) {
     if (!IsSurface(map, map.Cell(i))) continue;
     ++surfaces;
-    if (Inspected(i)) ++seen;
+    if (InspectedNear(map, map.Cell(i))) ++seen;
   }
   return surfaces == 0 ? 1.0 : static_cast<double>(seen) / surfaces;
 }

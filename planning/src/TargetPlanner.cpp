@@ -226,7 +226,7 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
     cv::Mat unseen(map.height, map.width, CV_8UC1, cv::Scalar(0));
     for (int i = 0; i < static_cast<int>(map.cells.size()); ++i) {
       const GridIndex c = map.Cell(i);
-      if (!coverage->Inspected(i) && SurfaceCoverage::IsSurface(map, c)) {
+      if (SurfaceCoverage::IsSurface(map, c) && !coverage->InspectedNear(map, c)) {
         unseen.at<std::uint8_t>(c.y, c.x) = 255;
       }
     }

@@ -18,6 +18,7 @@ TargetSelection SelectTarget(const std::vector<TargetCandidate>& candidates,
   TargetSelection selection;
   const TargetCandidate* best = nullptr;
   const TargetCandidate* same = nullptr;
+  const TargetCandidate* same_region = nullptr;  // Its viewpoint moved, its region did not.
   // A current target whose viewpoint the robot has reached is done, not kept.
   const bool current_open =
       current && DistanceM(map, current->viewpoint, robot) > config.near_m;
@@ -34,6 +35,11 @@ TargetSelection SelectTarget(const std::vector<TargetCandidate>& candidates,
                                 DistanceM(map, same->viewpoint, current->viewpoint))) {
       same = &c;
     }
+    if (current_open && c.kind == current->kind &&
+        DistanceM(map, c.region_center, current->region_center) <= config.same_target_m &&
+        (same_region == nullptr || c.score > same_region->score)) {
+      same_region = &c;
+    }
   }
   if (best == nullptr) return selection;
   if (same != nullptr && best->score < config.switch_ratio * same->score) {
@@ -41,6 +47,14 @@ TargetSelection SelectTarget(const std::vector<TargetCandidate>& candidates,
     TargetCandidate kept = *same;
     kept.viewpoint = current->viewpoint;
     selection.chosen = kept;
+    selection.kept_current = true;
+    return selection;
+  }
+  if (same == nullptr && same_region != nullptr &&
+      best->score < config.switch_ratio * same_region->score) {
+    // The region is still there, seen from elsewhere now (a region shrinks as the robot
+    // approaches and sees part of it): go on with it rather than across the map.
+    selection.chosen = *same_region;
     selection.kept_current = true;
     return selection;
   }

@@ -212,6 +212,21 @@ TEST(TargetPlanner, ARoomSeenFromAfarThroughADoorwayIsLookedIntoFromInFrontOfIt)
   EXPECT_GT(d.chosen.gain, 0.0);
 }
 
+TEST(SurfaceCoverage, AWallThatShiftsByOneCellStaysInspected) {
+  GridMap map(40, 40, kRes, CellState::kNavigable);
+  Fill(&map, 30, 0, 30, 39, CellState::kObstacle);  // A wall at x = 30.
+  SurfaceCoverage coverage;
+  coverage.Observe(map, {map.CenterX(20), map.CenterY(20), 0.0});  // 1 m away, facing it.
+  EXPECT_GT(coverage.Fraction(map), 0.5);  // The part within the view cone ...
+  EXPECT_LT(coverage.Fraction(map), 0.95);  // ... and not the ends.
+  ASSERT_TRUE(coverage.Inspected(map.Index({30, 20})));
+  // The map firms up: the wall's face is one cell nearer now.
+  Fill(&map, 29, 0, 29, 39, CellState::kObstacle);
+  EXPECT_FALSE(coverage.Inspected(map.Index({29, 20})));
+  EXPECT_TRUE(coverage.InspectedNear(map, {29, 20}));
+  EXPECT_FALSE(coverage.InspectedNear(map, {29, 39}));  // Out of the cone then and now.
+}
+
 TEST(Visibility, CellsNearerThanTheMinimumRangeAreNotSeen) {
   GridMap map(60, 60, kRes, CellState::kUnknown);
   ViewCone cone;

@@ -49,6 +49,19 @@ TEST(SelectTarget, SwitchesWhenAnotherScoresClearlyBetter) {
   EXPECT_EQ(s.chosen->kind, TargetKind::kInspection);
 }
 
+TEST(SelectTarget, KeepsARegionWhoseViewpointMovedAgainstOneAcrossTheMap) {
+  TargetCandidate current = Candidate(TargetKind::kInspection, {80, 50}, 1.0);
+  current.region_center = {90, 60};
+  // Partly seen on the way, the region's best viewpoint is now 1.5 m from the old one.
+  TargetCandidate moved = Candidate(TargetKind::kInspection, {80, 80}, 0.8);
+  moved.region_center = {92, 62};
+  const auto s = SelectTarget({moved, Candidate(TargetKind::kInspection, {10, 10}, 1.1)},
+                              current, kMap, kRobot, {});
+  ASSERT_TRUE(s.chosen);
+  EXPECT_TRUE(s.kept_current);
+  EXPECT_EQ(s.chosen->viewpoint, (GridIndex{80, 80}));  // The new viewpoint of the same region.
+}
+
 TEST(SelectTarget, SwitchesWhenTheCurrentTargetIsGone) {
   const TargetCandidate current = Candidate(TargetKind::kFrontier, {80, 50}, 5.0);
   const auto s = SelectTarget({Candidate(TargetKind::kFrontier, {80, 80}, 0.5),

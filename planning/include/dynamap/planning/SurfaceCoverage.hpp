@@ -26,6 +26,9 @@ class SurfaceCoverage {
   [[nodiscard]] bool Inspected(int index) const {
     return index < static_cast<int>(inspected_.size()) && inspected_[index] != 0;
   }
+  // Inspected, or next to an inspected cell: a wall's cells shift by one as the map firms
+  // up, and the new ones were seen as closely as their neighbours.
+  [[nodiscard]] bool InspectedNear(const GridMap& map, GridIndex c) const;
   // Surface cells: obstacle cells with a navigable 4-neighbour (what the robot can face).
   [[nodiscard]] static bool IsSurface(const GridMap& map, GridIndex c);
   // Share of the map's surface cells inspected so far (1 when there are none).

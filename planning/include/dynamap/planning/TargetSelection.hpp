@@ -16,8 +16,9 @@ namespace dynamap::planning {
 
 struct TargetSelectionConfig {
   double near_m = 0.35;         // m, viewpoints this close to the robot are not chosen.
-  double same_target_m = 0.75;  // m, a candidate of the same kind with its viewpoint this
-                                // close to the current one is the current target, re-scored.
+  double same_target_m = 0.75;  // m, a candidate of the same kind with its viewpoint (or,
+                                // failing that, its region centre) this close to the
+                                // current one's is the current target, re-scored.
   double switch_ratio = 1.5;    // Another candidate must score this many times more.
 };
 
