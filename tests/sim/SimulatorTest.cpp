@@ -212,31 +212,42 @@ TEST(Simulator, PeopleWaitForTheRobotInsteadOfWalkingIntoIt) {
   config.render_depth = false;
   const RobotConfig robot;
   Simulator simulator(world, robot, SmallRig(0.1), config);
-  SimOutput out = simulator.Advance(6.0);
-  EXPECT_TRUE(out.collisions.empty());
+  (void)simulator.Advance(4.0);
   EXPECT_EQ(simulator.collision_count(), 0);
   // It stopped at the yield clearance, about 2.1 s into its 6 s walk.
   const double stop_distance = robot.footprint_radius_m + 0.25 + config.yield_clearance_m;
-  EXPECT_NEAR(simulator.person_wait_s(0), 6.0 - (3.0 - stop_distance), 0.05);
-  // The robot drives 0.3 m towards the person: it backs off the way it came, no contact.
+  EXPECT_NEAR(simulator.person_state(0).position.x(), stop_distance, 0.01);
+  EXPECT_NEAR(simulator.person_wait_s(0), 4.0 - (3.0 - stop_distance), 0.05);
+  // The robot drives towards the person: it backs off the way it came, no contact.
   simulator.SetCommand({0, 0.3, 0.0});
-  (void)simulator.Advance(1.5);
+  (void)simulator.Advance(1.0);
   simulator.SetCommand({0, 0.0, 0.0});
-  const double before_approach = simulator.person_wait_s(0);
-  EXPECT_GT(before_approach - (6.0 - (3.0 - stop_distance)), 1.5 + 0.15);  // Walked back.
+  (void)simulator.Advance(0.5);
   EXPECT_EQ(simulator.collision_count(), 0);
-  const double waited = simulator.person_wait_s(0);
-  // The robot drives out of the way (along +y); the person walks on and waits no longer.
+  const double gap = simulator.person_state(0).position.x() - simulator.TruePose().x;
+  EXPECT_NEAR(gap, stop_distance, 0.02);
+  EXPECT_GT(simulator.person_state(0).position.x(), stop_distance + 0.1);
+}
+
+TEST(Simulator, APersonGivesWayToARobotThatStaysInItsWayThenWalksOn) {
+  const World world = testing::MustParse(WalkerThroughTheRobot(""));
+  SimulatorConfig config = Config(2);
+  config.render_depth = false;
+  const RobotConfig robot;
+  Simulator simulator(world, robot, SmallRig(0.1), config);
+  // Waits 5 s, then walks back until 1.5 m from the robot's footprint, and stands there.
+  (void)simulator.Advance(10.0);
+  const double give_way = robot.footprint_radius_m + 0.25 + config.give_way_clearance_m;
+  EXPECT_NEAR(simulator.person_state(0).position.x(), give_way, 0.02);
+  // The robot leaves the person's way (drives 2 m along +y); the person walks on past
+  // where the robot stood, to the end of its path.
   simulator.SetCommand({0, 0.0, 1.5});
   (void)simulator.Advance(1.05);
   simulator.SetCommand({0, 0.8, 0.0});
   (void)simulator.Advance(2.5);
   simulator.SetCommand({0, 0.0, 0.0});
-  (void)simulator.Advance(1.0);
-  const double after_move = simulator.person_wait_s(0);
-  (void)simulator.Advance(3.0);
-  EXPECT_GT(after_move, waited);
-  EXPECT_NEAR(simulator.person_wait_s(0), after_move, 1e-6);
+  (void)simulator.Advance(15.0);
+  EXPECT_NEAR(simulator.person_state(0).position.x(), -3.0, 1e-6);
   EXPECT_EQ(simulator.collision_count(), 0);
 }
 

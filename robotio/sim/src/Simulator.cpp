@@ -29,7 +29,8 @@ Simulator::Simulator(World world, RobotConfig robot, Rig rig, SimulatorConfig co
       collision_world_(world_, robot_.height_m),
       step_ns_(std::max<std::int64_t>(1000, SecondsToNanos(config.physics_step_s))),
       frame_index_(rig_.kinects.size(), 0),
-      person_clock_s_(world_.people.size(), 0.0) {
+      person_clock_s_(world_.people.size(), 0.0),
+      yielding_(world_.people.size()) {
   if (config_.render_depth && !rig_.kinects.empty()) {
     renderer_ = std::make_unique<DepthRenderer>(world_, config_.render_threads);
   }
@@ -135,24 +136,45 @@ void Simulator::Step(SimOutput* out) {
 void Simulator::AdvancePeople(double dt_s, const Pose2D& robot_world) {
   const Eigen::Vector2d robot(robot_world.x, robot_world.y);
   const double radius = robot_.footprint_radius_m;
+  const double now_s = NanosToSeconds(now_ns_);
   for (std::size_t i = 0; i < world_.people.size(); ++i) {
     const Person& person = world_.people[i];
     double& clock = person_clock_s_[i];
-    if (person.yields) {
-      const auto clearance = [&](double t) {
-        return collision_world_.PersonClearance(person, PersonAt(person, t), robot, radius);
-      };
-      const double here = clearance(clock);
-      const double ahead = clearance(clock + dt_s);
-      if (ahead < config_.yield_clearance_m && ahead < here) {
-        // The step would bring it nearer to the robot than it likes. With the robot already
-        // that near (it came closer), it backs off the way it came; otherwise it waits.
-        if (here < config_.yield_clearance_m && clock >= dt_s && clearance(clock - dt_s) > here) {
-          clock -= dt_s;
-        }
+    Yielding& y = yielding_[i];
+    if (!person.yields) {
+      clock += dt_s;
+      continue;
+    }
+    const auto clearance = [&](double t) {
+      return collision_world_.PersonClearance(person, PersonAt(person, t), robot, radius);
+    };
+    const double here = clearance(clock);
+    const bool can_step_back = clock >= dt_s && clearance(clock - dt_s) > here;
+    if (y.giving_way) {
+      // Back the way it came, far enough for the robot to pass, then it stands a while.
+      if (here < config_.give_way_clearance_m && can_step_back) {
+        clock -= dt_s;
         continue;
       }
+      y.giving_way = false;
+      y.waited_s = 0.0;
+      y.stand_until_s = now_s + config_.yield_patience_s;
     }
+    if (now_s < y.stand_until_s && here < config_.give_way_clearance_m) continue;
+    const double ahead = clearance(clock + dt_s);
+    if (ahead < config_.yield_clearance_m && ahead < here) {
+      // The step would bring it nearer to the robot than it likes. With the robot already
+      // that near (it came closer) it backs off; otherwise it waits, and gives way when
+      // the robot stays in its way.
+      y.waited_s += dt_s;
+      if (here < config_.yield_clearance_m && can_step_back) {
+        clock -= dt_s;
+      } else if (y.waited_s > config_.yield_patience_s) {
+        y.giving_way = true;
+      }
+      continue;
+    }
+    y.waited_s = 0.0;
     clock += dt_s;
   }
 }

@@ -35,6 +35,10 @@ struct SimulatorConfig {
   KinectModelConfig kinect;        // Depth error model of every Kinect.
   double yield_clearance_m = 0.3;  // m, a person who yields does not step nearer than this
                                    // to the robot's footprint; it waits until it may.
+  double yield_patience_s = 5.0;   // s a person waits for a robot that stays in its way;
+                                   // then it walks back the way it came, to
+  double give_way_clearance_m = 1.5;  // m from the robot, and stands there for the patience
+                                      // time before it tries again (no deadlock in a door).
 };
 
 struct CollisionEvent {
@@ -76,7 +80,11 @@ class Simulator {
   [[nodiscard]] const Rig& rig() const { return rig_; }
   [[nodiscard]] const RobotConfig& robot() const { return robot_; }
   [[nodiscard]] int collision_count() const { return collisions_; }
-  // Seconds person i (World::people order) has spent waiting for the robot so far.
+  // Where person i (World::people order) is now.
+  [[nodiscard]] PersonState person_state(std::size_t i) const {
+    return PersonAt(world_.people.at(i), person_clock_s_.at(i));
+  }
+  // Seconds person i's schedule is behind: time spent waiting for the robot or giving way.
   [[nodiscard]] double person_wait_s(std::size_t i) const {
     return NanosToSeconds(now_ns_) - person_clock_s_.at(i);
   }
@@ -105,6 +113,12 @@ class Simulator {
   std::vector<SimFrame> pending_;          // Captured, not yet delivered.
   std::int64_t moving_solids_ns_ = -1;     // Time the renderer's moving geometry shows.
   std::vector<double> person_clock_s_;    // Each person's own schedule time.
+  struct Yielding {
+    double waited_s = 0.0;       // Waiting for the robot without a break.
+    bool giving_way = false;     // Walking back the way it came.
+    double stand_until_s = -1.0; // Stands where it gave way until then.
+  };
+  std::vector<Yielding> yielding_;
   bool in_contact_ = false;
   int collisions_ = 0;
 };

@@ -97,9 +97,10 @@ struct Person {
   bool loop = true;      // Back to the first waypoint and again, or stop at the last.
   bool screen = false;   // Carries a 1.5 x 1 m screen at its side, along its heading.
   bool yields = true;    // Waits while its next step would bring it nearer than the
-                         // simulator's yield clearance to the robot, and backs off the way
-                         // it came when the robot comes nearer, as people do; false walks
-                         // its schedule regardless (into a standing robot).
+                         // simulator's yield clearance to the robot, backs off the way it
+                         // came when the robot comes nearer and gives way when the robot
+                         // stays in its way, as people do; false walks its schedule
+                         // regardless (into a standing robot).
   std::vector<Waypoint> path;
 };
 
