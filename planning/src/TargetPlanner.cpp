@@ -75,16 +75,18 @@ bool ClearSight(const GridMap& map, GridIndex a, GridIndex b) {
   return true;
 }
 
-// The reachable cell between `min_cells` and `max_cells` from `center` that sees it and is
-// cheapest to reach.
 struct Viewpoint {
   bool found = false;
   GridIndex cell;
   double cost = kInfinity;
 };
-Viewpoint FindViewpoint(const GridMap& map, const std::vector<double>& cost_to_go,
-                        GridIndex center, double min_cells, double max_cells) {
+// The reachable cell between `min_cells` and `max_cells` from `center` that sees it and
+// has the smallest key(squared distance to the centre, cost to reach it).
+template <typename Key>
+Viewpoint BestViewpoint(const GridMap& map, const std::vector<double>& cost_to_go,
+                        GridIndex center, double min_cells, double max_cells, Key key) {
   Viewpoint best;
+  double best_key = kInfinity;
   const int r = static_cast<int>(std::ceil(max_cells));
   for (int y = std::max(0, center.y - r); y <= std::min(map.height - 1, center.y + r); ++y) {
     for (int x = std::max(0, center.x - r); x <= std::min(map.width - 1, center.x + r); ++x) {
@@ -93,38 +95,31 @@ Viewpoint FindViewpoint(const GridMap& map, const std::vector<double>& cost_to_g
       const double d2 = dx * dx + dy * dy;
       if (d2 > max_cells * max_cells || d2 < min_cells * min_cells) continue;
       const double c = cost_to_go[static_cast<std::size_t>(y) * map.width + x];
-      if (c >= best.cost) continue;
+      if (c >= kInfinity) continue;
+      const double k = key(d2, c);
+      if (k >= best_key) continue;
       const GridIndex cell{x, y};
       if (!ClearSight(map, cell, center)) continue;
       best = {true, cell, c};
+      best_key = k;
     }
   }
   return best;
 }
 
-// The reachable cell within `max_cells` of `center` that sees it and is nearest to it: for
-// a region seen only through a doorway from afar, the place in front of the doorway (no
-// cell near the region itself is reachable yet).
+// The cheapest to reach.
+Viewpoint FindViewpoint(const GridMap& map, const std::vector<double>& cost_to_go,
+                        GridIndex center, double min_cells, double max_cells) {
+  return BestViewpoint(map, cost_to_go, center, min_cells, max_cells,
+                       [](double, double cost) { return cost; });
+}
+
+// The nearest to the region: for a region seen only through a doorway from afar, the place
+// in front of the doorway (no cell near the region itself is reachable yet).
 Viewpoint FindNearestViewpoint(const GridMap& map, const std::vector<double>& cost_to_go,
                                GridIndex center, double max_cells) {
-  Viewpoint best;
-  double best_d2 = kInfinity;
-  const int r = static_cast<int>(std::ceil(max_cells));
-  for (int y = std::max(0, center.y - r); y <= std::min(map.height - 1, center.y + r); ++y) {
-    for (int x = std::max(0, center.x - r); x <= std::min(map.width - 1, center.x + r); ++x) {
-      const double dx = x - center.x;
-      const double dy = y - center.y;
-      const double d2 = dx * dx + dy * dy;
-      if (d2 > max_cells * max_cells || d2 >= best_d2) continue;
-      const double c = cost_to_go[static_cast<std::size_t>(y) * map.width + x];
-      if (c >= kInfinity) continue;
-      const GridIndex cell{x, y};
-      if (!ClearSight(map, cell, center)) continue;
-      best = {true, cell, c};
-      best_d2 = d2;
-    }
-  }
-  return best;
+  return BestViewpoint(map, cost_to_go, center, 0.0, max_cells,
+                       [](double d2, double) { return d2; });
 }
 
 // A start cell for the cost-to-go: the robot's, or the nearest free one when the robot
