@@ -40,6 +40,36 @@ DualOcTree::DualOcTree(double resolution)
   registration_.EnsureLinking();
 }
 
+namespace {
+
+void CopyChildren(const DualOcTree& from_tree, const DualOcTreeNode& from, DualOcTree& to_tree,
+                  DualOcTreeNode* to) {
+  for (unsigned int i = 0; i < 8; ++i) {
+    if (!from_tree.nodeChildExists(&from, i)) continue;
+    const DualOcTreeNode* child = from_tree.getNodeChild(&from, i);
+    DualOcTreeNode* copy = to_tree.createNodeChild(to, i);
+    copy->copyData(*child);
+    CopyChildren(from_tree, *child, to_tree, copy);
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<DualOcTree> DualOcTree::Clone() const {
+  auto copy = std::make_unique<DualOcTree>(resolution);
+  copy->setOccupancyThres(getOccupancyThres());
+  copy->setProbHit(getProbHit());
+  copy->setProbMiss(getProbMiss());
+  copy->setClampingThresMin(getClampingThresMin());
+  copy->setClampingThresMax(getClampingThresMax());
+  if (root != nullptr) {
+    DualOcTreeNode* copy_root = copy->CreateRoot();
+    copy_root->copyData(*root);
+    CopyChildren(*this, *root, *copy, copy_root);
+  }
+  return copy;
+}
+
 DualOcTreeNode* DualOcTree::CreateRoot() {
   if (root == nullptr) {
     root = new DualOcTreeNode();

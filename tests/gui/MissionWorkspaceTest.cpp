@@ -47,6 +47,10 @@ class MissionWorkspaceTest : public QObject {
     QCOMPARE(workspace.Session()->Phase(), MissionPhase::kRunning);
 
     QTRY_VERIFY_WITH_TIMEOUT(workspace.Session()->Snapshot().sim_time_s > 0.5, 20000);
+    // The 3D view follows the live map, long before the first save (every 600 s here).
+    QTRY_VERIFY_WITH_TIMEOUT(workspace.Session()->Map() != nullptr, 20000);
+    QVERIFY(workspace.Session()->Map()->static_count > 0);
+    QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("map.ot"))));
     QVERIFY(workspace.StopMission());
     QVERIFY(workspace.Session()->Phase() == MissionPhase::kFinishing ||
             workspace.Session()->Phase() == MissionPhase::kFinished);
@@ -105,7 +109,7 @@ class MissionWorkspaceTest : public QObject {
     panel->SetWorldFile(ResourcePath(QStringLiteral("worlds/small_office.yaml")));
     panel->SetKinectSize(160, 120);
     panel->SetTimeLimit(seconds);
-    panel->SetMapRefresh(1.0);
+    panel->SetSavePeriod(600.0);
     panel->SetOutputDir(out);
   }
 };

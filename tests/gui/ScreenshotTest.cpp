@@ -76,7 +76,7 @@ class ScreenshotTest : public QObject {
     // Long enough for the first look around (about 13 s) and some driving, so the trail
     // and the planned path are in the picture.
     mission->Panel()->SetTimeLimit(30.0);
-    mission->Panel()->SetMapRefresh(1.0);
+    mission->Panel()->SetSavePeriod(1.0);
     mission->Panel()->SetOutputDir(out.path());
     QVERIFY(mission->StartMission());
     QTRY_COMPARE_WITH_TIMEOUT(mission->Session()->Phase(), MissionPhase::kFinished, 90000);

@@ -51,6 +51,26 @@ TEST(DualOcTreeTest, SaveLoadRoundTripKeepsBothChannelsExactly) {
   EXPECT_GT(leaves, 100u);
 }
 
+TEST(DualOcTreeTest, CloneIsAnIndependentCopyOfBothChannels) {
+  DualMap map{ThesisRuleConfig()};
+  testing::SyntheticScene scene;
+  map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
+  scene.boxes.push_back({{1.5f, -0.2f, -0.5f}, {1.8f, 0.2f, 1.2f}});
+  map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
+  ASSERT_TRUE(map.IsDynamicOccupied({1.52f, 0.0f, 0.0f}));
+  const std::unique_ptr<DualOcTree> copy = map.tree().Clone();
+  EXPECT_EQ(copy->size(), map.tree().size());
+  EXPECT_EQ(Serialise(*copy), Serialise(map.tree()));  // Every node, both channels.
+  EXPECT_EQ(copy->getProbHit(), map.tree().getProbHit());
+  EXPECT_EQ(copy->getClampingThresMax(), map.tree().getClampingThresMax());
+  // The original goes on changing; the copy does not.
+  const std::string before = Serialise(*copy);
+  scene.boxes.clear();
+  map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
+  EXPECT_NE(Serialise(map.tree()), before);
+  EXPECT_EQ(Serialise(*copy), before);
+}
+
 TEST(DualOcTreeTest, InnerNodesHoldTheMaximumOfBothChannels) {
   DualMap map{ThesisRuleConfig()};
   testing::SyntheticScene scene;

@@ -126,13 +126,14 @@ QWidget* MissionPanel::MakeSetupGroup() {
   pace_->addItem(tr("Real time"), 1.0);
   pace_->setToolTip(tr("Real time drops the frames the mapper cannot keep up with, as on the robot"));
   form->addRow(tr("Pace"), pace_);
-  map_refresh_ = new QDoubleSpinBox;
-  map_refresh_->setRange(1.0, 600.0);
-  map_refresh_->setDecimals(0);
-  map_refresh_->setSuffix(tr(" s"));
-  map_refresh_->setValue(5.0);
-  map_refresh_->setToolTip(tr("Simulated seconds between the map saves the 3D view shows"));
-  form->addRow(tr("3D map refresh"), map_refresh_);
+  save_period_ = new QDoubleSpinBox;
+  save_period_->setRange(1.0, 600.0);
+  save_period_->setDecimals(0);
+  save_period_->setSuffix(tr(" s"));
+  save_period_->setValue(30.0);
+  save_period_->setToolTip(tr("Simulated seconds between the periodic saves of map.ot (what "
+                              "a crash leaves); the 3D view follows the map live"));
+  form->addRow(tr("Map saved every"), save_period_);
   out_dir_ = new QLineEdit;
   out_dir_->setPlaceholderText(tr("new folder in ~/dynamap-missions"));
   form->addRow(tr("Results"), out_dir_);
@@ -180,7 +181,7 @@ runtime::MissionConfig MissionPanel::BuildConfig() const {
   config.kinect_height = size.height();
   config.max_time_s = time_limit_->value();
   config.speed = pace_->currentData().toDouble();
-  config.save_period_s = map_refresh_->value();
+  config.save_period_s = save_period_->value();
   QString out = out_dir_->text().trimmed();
   if (out.isEmpty()) {
     out = QDir::home().filePath(
@@ -209,7 +210,7 @@ void MissionPanel::SetKinectSize(int width, int height) {
 }
 
 void MissionPanel::SetTimeLimit(double seconds) { time_limit_->setValue(seconds); }
-void MissionPanel::SetMapRefresh(double seconds) { map_refresh_->setValue(seconds); }
+void MissionPanel::SetSavePeriod(double seconds) { save_period_->setValue(seconds); }
 void MissionPanel::SetOutputDir(const QString& dir) { out_dir_->setText(dir); }
 
 void MissionPanel::ShowPhase(MissionPhase phase) {

@@ -55,6 +55,8 @@ bool MissionSession::Start(runtime::MissionConfig config) {
   report_.reset();
   map_.reset();
   map_loaded_time_ = QDateTime();
+  map_copy_version_ = 0;
+  map_copy_requested_.invalidate();
   snapshot_ = runtime::MissionSnapshot();
   last_error_.clear();
   SetPhase(MissionPhase::kStarting);
@@ -120,10 +122,33 @@ void MissionSession::Poll() {
   if (!runtime_ || (phase_ != MissionPhase::kRunning && phase_ != MissionPhase::kPaused)) return;
   snapshot_ = runtime_->Snapshot();
   emit SnapshotUpdated();
-  ReloadMapIfNewer();
+  UpdateLiveMap();
   const auto state = snapshot_.state;
   if (state == runtime::MissionState::kStopping || state == runtime::MissionState::kFinished) {
     BeginFinish();
+  }
+}
+
+void MissionSession::UpdateLiveMap() {
+  if (map_task_->Running()) return;
+  auto [tree, version] = runtime_->LatestMapCopy();
+  if (tree && version != map_copy_version_) {
+    map_copy_version_ = version;
+    map_task_->Start(tr("Drawing the mission map"),
+                     [this, tree = std::move(tree)](const BackgroundTask::Context& c) {
+                       auto voxels = ExtractVoxels(*tree, c.CancelFlag(), [](double) {});
+                       if (!voxels) return;
+                       auto set = std::make_shared<const VoxelSet>(std::move(*voxels));
+                       c.Deliver([this, set] {
+                         map_ = set;
+                         emit MapUpdated();
+                       });
+                     });
+    return;
+  }
+  if (!map_copy_requested_.isValid() || map_copy_requested_.elapsed() >= 1000) {
+    runtime_->RequestMapCopy();
+    map_copy_requested_.restart();
   }
 }
 
@@ -135,7 +160,7 @@ void MissionSession::ReloadMapIfNewer() {
   map_loaded_time_ = info.lastModified();
   map_task_->Start(tr("Reading the mission map"), [this, file](const BackgroundTask::Context& c) {
     auto tree = mapping::LoadMap(file.toStdString());
-    if (!tree) return;  // Retried at the next save; the file is replaced atomically.
+    if (!tree) return;  // The file is replaced atomically; a broken one is not drawn.
     auto voxels = ExtractVoxels(**tree, c.CancelFlag(), [](double) {});
     if (!voxels) return;
     auto set = std::make_shared<const VoxelSet>(std::move(*voxels));

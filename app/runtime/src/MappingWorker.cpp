@@ -131,6 +131,9 @@ void MappingWorker::Reproject() {
   (void)projector_.ExpireDynamicObstacles(view, now_s);
   touched_.clear();
   hit_.clear();
+  if (mediator_.map_copy_wanted.exchange(false)) {
+    mediator_.map_copy.Set(std::shared_ptr<const mapping::DualOcTree>(map().tree().Clone()));
+  }
   mediator_.grid.Set(std::make_shared<const planning::GridMap>(projector_.map()));
 }
 

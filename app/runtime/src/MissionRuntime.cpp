@@ -194,6 +194,15 @@ void MissionRuntime::Monitor() {
   }
 }
 
+void MissionRuntime::RequestMapCopy() { mediator_->map_copy_wanted = true; }
+
+std::pair<std::shared_ptr<const mapping::DualOcTree>, std::uint64_t>
+MissionRuntime::LatestMapCopy() const {
+  const auto copy = mediator_->map_copy.Get();
+  if (!copy) return {nullptr, 0};
+  return {copy->value, copy->version};
+}
+
 bool MissionRuntime::Pause() { return mediator_->control.Pause(); }
 bool MissionRuntime::Resume() { return mediator_->control.Resume(); }
 void MissionRuntime::Stop() { mediator_->WakeAll(); }

@@ -2,6 +2,8 @@
 // Wolf & Sukhatme 2005 in 3D), built like OctoMap's ColorOcTree and registered for .ot.
 #pragma once
 
+#include <memory>
+
 #include <octomap/OccupancyOcTreeBase.h>
 #include <octomap/OcTreeNode.h>
 
@@ -59,6 +61,10 @@ class DualOcTree : public octomap::OccupancyOcTreeBase<DualOcTreeNode> {
   explicit DualOcTree(double resolution);
   DualOcTree* create() const override { return new DualOcTree(resolution); }
   std::string getTreeType() const override { return kTreeType; }
+
+  // A deep copy with both channels and the sensor model (OctoMap's own copy constructor
+  // copies inner nodes as its base node type, losing the dynamic channel).
+  [[nodiscard]] std::unique_ptr<DualOcTree> Clone() const;
 
   // Node access for the batched scan update (ScanIntegrator), which walks the tree itself.
   [[nodiscard]] DualOcTreeNode* MutableRoot() { return root; }

@@ -34,7 +34,7 @@ class MissionPanel : public QWidget {
   void SetPoseSource(runtime::PoseSource source);
   void SetKinectSize(int width, int height);
   void SetTimeLimit(double seconds);
-  void SetMapRefresh(double seconds);
+  void SetSavePeriod(double seconds);
   void SetOutputDir(const QString& dir);
 
   // Enables the buttons and setup for `phase`.
@@ -66,7 +66,7 @@ class MissionPanel : public QWidget {
   QComboBox* kinect_size_ = nullptr;
   QDoubleSpinBox* time_limit_ = nullptr;
   QComboBox* pace_ = nullptr;
-  QDoubleSpinBox* map_refresh_ = nullptr;
+  QDoubleSpinBox* save_period_ = nullptr;
   QLineEdit* out_dir_ = nullptr;
   QPushButton* start_ = nullptr;
   QPushButton* pause_ = nullptr;

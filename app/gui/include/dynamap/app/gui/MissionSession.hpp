@@ -1,13 +1,16 @@
 // One mission as the Mission workspace drives it: creates a runtime::MissionRuntime off the
-// GUI thread, starts, pauses, resumes and stops it, pulls Snapshot() at a few Hz, reloads
-// the 3D map whenever the runtime has saved a newer map.ot, and calls Finish() off the GUI
-// thread when the mission ends. The GUI thread never waits for the runtime.
+// GUI thread, starts, pauses, resumes and stops it, pulls Snapshot() at a few Hz, turns the
+// runtime's map copies into voxels for the 3D view (about once a second), and calls
+// Finish() off the GUI thread when the mission ends. The GUI thread never waits for the
+// runtime.
 #pragma once
 
 #include <QDateTime>
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <QTimer>
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -69,6 +72,9 @@ class MissionSession : public QObject {
   void SetPhase(MissionPhase phase);
   void Fail(const QString& message);
   void Poll();
+  // While running: the runtime's newest map copy into voxels (off the GUI thread), and
+  // the next copy asked for at most once a second. After the end: the final map.ot.
+  void UpdateLiveMap();
   void ReloadMapIfNewer();
   void BeginFinish();
 
@@ -79,10 +85,12 @@ class MissionSession : public QObject {
   std::optional<runtime::MissionReport> report_;
   std::shared_ptr<const VoxelSet> map_;
   QDateTime map_loaded_time_;
+  std::uint64_t map_copy_version_ = 0;  // Of the runtime's map copy last drawn.
+  QElapsedTimer map_copy_requested_;
   QString last_error_;
   QTimer poll_timer_;
   BackgroundTask* lifecycle_task_ = nullptr;  // Create, then Finish.
-  BackgroundTask* map_task_ = nullptr;        // Reading map.ot.
+  BackgroundTask* map_task_ = nullptr;        // Map copy or map.ot into voxels.
 };
 
 }  // namespace dynamap::app::gui

@@ -15,6 +15,7 @@
 #include "dynamap/app/runtime/MissionClock.hpp"
 #include "dynamap/app/runtime/OdometryHistory.hpp"
 #include "dynamap/app/runtime/RunControl.hpp"
+#include "dynamap/mapping/DualOcTree.hpp"
 #include "dynamap/planning/GridMap.hpp"
 #include "dynamap/planning/TargetPlanner.hpp"
 #include "dynamap/planning/TraversalGrid.hpp"
@@ -83,6 +84,10 @@ class Mediator {
   LatestValue<std::shared_ptr<const planning::GridMap>> grid;
   LatestValue<Plan> plan;
   LatestValue<robotio::VelocityCommand> command;
+  // A copy of the dual map for a front end's 3D view, made by the mapping worker after its
+  // next batch when one is asked for (nothing is copied when no one asks).
+  std::atomic<bool> map_copy_wanted{false};
+  LatestValue<std::shared_ptr<const mapping::DualOcTree>> map_copy;
   MissionCounters counters;
 
   // The pose estimate now: SLAM's newest fix moved on by the odometry since (T_map_base).

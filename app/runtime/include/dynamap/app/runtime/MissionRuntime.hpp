@@ -7,11 +7,13 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "dynamap/app/runtime/CpuTime.hpp"
 #include "dynamap/app/runtime/MissionConfig.hpp"
 #include "dynamap/app/runtime/MissionSnapshot.hpp"
+#include "dynamap/mapping/DualOcTree.hpp"
 #include "dynamap/robotio/Expected.hpp"
 #include "dynamap/robotio/RecordingWriter.hpp"
 #include "dynamap/robotio/Rig.hpp"
@@ -45,6 +47,13 @@ class MissionRuntime {
 
   // A consistent copy of what the workers published last; never blocks them for long.
   [[nodiscard]] MissionSnapshot Snapshot() const;
+
+  // The 3D map for a front end, without stalling the workers: RequestMapCopy() asks the
+  // mapping worker for a copy after its next batch; LatestMapCopy() is the newest one made
+  // (null before the first) with a version that grows with each copy.
+  void RequestMapCopy();
+  [[nodiscard]] std::pair<std::shared_ptr<const mapping::DualOcTree>, std::uint64_t>
+  LatestMapCopy() const;
 
   // After Wait(): scores the run and writes every result file into the output folder.
   [[nodiscard]] robotio::Expected<MissionReport> Finish();
