@@ -88,10 +88,11 @@ TEST(ExplorationMission, MapsAreSavedPeriodicallyWhileTheMissionRuns) {
 }
 
 // The whole mission, frames placed at the true poses (in-mission SLAM at this image size
-// is not yet good enough: docs/RESULTS.md): two to three minutes of wall time on two cores.
-// The thresholds are the reduced-scale figures measured in docs/RESULTS.md; completion and
-// a collision-free run are not yet reliable on every run, so they are reported, not
-// asserted.
+// is not yet good enough: docs/RESULTS.md): three to four minutes of wall time on two
+// cores. The thresholds are below the reduced-scale figures measured in docs/RESULTS.md
+// (explored 1.0, surfaces 0.61, DA 0.98-0.99, no collisions on seeds 1-3 at 240 s).
+// Completion is reported, not asserted: with inspection targets the default planner is
+// still inspecting walls when the time is up.
 TEST(ExplorationMission, ExploresTheSmallOffice) {
   const std::string out = test::ScratchDir();
   MissionConfig config = SmallOffice(out);
@@ -111,9 +112,10 @@ TEST(ExplorationMission, ExploresTheSmallOffice) {
   EXPECT_EQ(report->frames_dropped, 0);
   EXPECT_GT(report->path_length_m, 10.0);  // It leaves the start and visits the rooms.
   EXPECT_LE(report->ate_rmse_m, 0.05);
-  EXPECT_GE(report->explored_free_fraction, 0.6);
-  EXPECT_GE(report->surface_coverage, 0.25);
+  EXPECT_GE(report->explored_free_fraction, 0.85);
+  EXPECT_GE(report->surface_coverage, 0.4);
   EXPECT_GE(report->dynamic_accuracy, 0.9);
+  EXPECT_LE(report->collisions, 1);  // None measured; one contact is a warning, two a bug.
   // It replans as it goes (every 0.5 s unless it is waiting for a turn to finish).
   EXPECT_GE(report->plans, static_cast<std::int64_t>(report->mission_time_s / 2.0));
   for (const char* file : {"map.ot", "static.bt", "dynamic.bt", "trajectory.tum",
