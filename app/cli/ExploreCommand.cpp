@@ -11,6 +11,7 @@
 #include "cli/Interrupt.hpp"
 #include "cli/ProgressLine.hpp"
 #include "dynamap/app/runtime/MissionRuntime.hpp"
+#include "dynamap/planning/PlanningConfig.hpp"
 
 namespace dynamap::app {
 
@@ -20,6 +21,7 @@ struct ExploreOptions {
   std::string world = ResourcePath("worlds/office.yaml");
   std::string rig = ResourcePath("rigs/two_kinects.yaml");
   std::string robot = ResourcePath("robots/segway_rmp50.yaml");
+  std::string planning;  // Planning settings over the defaults; "" = defaults.
   std::string out;
   std::uint64_t seed = 1;
   double max_time_s = 1200.0;
@@ -58,6 +60,11 @@ void Run(const ExploreOptions& options) {
   config.poses = options.poses == "odometry"      ? runtime::PoseSource::kOdometry
                  : options.poses == "groundtruth" ? runtime::PoseSource::kGroundTruth
                                                   : runtime::PoseSource::kSlam;
+  if (!options.planning.empty()) {
+    auto planning = planning::LoadPlanningConfig(options.planning);
+    if (!planning) FailCommand("explore", planning.error().message);
+    config.planning = *planning;
+  }
   config.planning.targets.strategy = options.targets == "nearest-frontier" ? "nearest-frontier"
                                                                            : "gain";
   auto runtime = runtime::MissionRuntime::Create(config);
@@ -124,6 +131,10 @@ void RegisterExploreCommand(CLI::App& app) {
   cmd->add_option("--world", options->world, "World file")->check(CLI::ExistingFile);
   cmd->add_option("--rig", options->rig, "Kinect rig file")->check(CLI::ExistingFile);
   cmd->add_option("--robot", options->robot, "Robot file")->check(CLI::ExistingFile);
+  cmd->add_option("--planning", options->planning,
+                  "Planning settings (YAML, the keys of planning::PlanningConfig) over the "
+                  "defaults, e.g. 'targets: {frontiers_first: true}'")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--out", options->out, "Output folder (default: a new runs/explore-* folder)");
   cmd->add_option("--seed", options->seed, "Simulator seed");
   cmd->add_option("--max-time", options->max_time_s, "Simulated seconds before the mission ends")

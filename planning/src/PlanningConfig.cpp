@@ -32,6 +32,7 @@ void ReadTargets(robotio::ConfigNode& n, TargetPlannerConfig* c) {
   n.Read("min_gain_m2", &c->min_gain_m2, 0.0, kHuge);
   n.Read("path_cost_offset_m", &c->path_cost_offset_m, 0.01, kHuge);
   n.Read("inspection", &c->inspection);
+  n.Read("frontiers_first", &c->frontiers_first);
   n.Read("inspection_weight", &c->inspection_weight, 0.0, kHuge);
   n.Read("min_inspection_m", &c->min_inspection_m, 0.0, kHuge);
   n.Read("home_tolerance_m", &c->home_tolerance_m, 0.0, 10.0);

@@ -216,7 +216,9 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
   }
 
   // Inspection: surfaces not yet seen from within the inspection distance.
-  if (!nearest && config_.inspection && coverage != nullptr) {
+  const bool frontier_left = !decision.candidates.empty();
+  if (!nearest && config_.inspection && coverage != nullptr &&
+      !(config_.frontiers_first && frontier_left)) {
     const double inspect_cells = coverage->config().inspection_distance_m / res;
     cv::Mat unseen(map.height, map.width, CV_8UC1, cv::Scalar(0));
     for (int i = 0; i < static_cast<int>(map.cells.size()); ++i) {

@@ -2,6 +2,7 @@
 // blacklisting, inspection and completion (return to start, then done).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "dynamap/planning/CostField.hpp"
@@ -164,6 +165,22 @@ TEST(TargetPlanner, InspectionTargetsLeadToEverySurfaceUntilDone) {
   EXPECT_LT(visits, 40);
   EXPECT_EQ(d.kind, TargetKind::kReturnToStart);
   EXPECT_GT(coverage.Fraction(map), 0.9);
+}
+
+TEST(TargetPlanner, FrontiersFirstLeavesWallsForWhenNoFrontierIsLeft) {
+  const GridMap map = RoomWithOpenings();
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  const SurfaceCoverage nothing_seen;
+  TargetPlannerConfig frontiers_first;
+  frontiers_first.frontiers_first = true;
+  const TargetDecision first =
+      TargetPlanner(frontiers_first, kRes).Plan(map, grid, {15, 24}, {15, 24}, &nothing_seen, 0.0);
+  ASSERT_FALSE(first.candidates.empty());
+  for (const TargetCandidate& c : first.candidates) EXPECT_EQ(c.kind, TargetKind::kFrontier);
+  const TargetDecision both =  // The default: both kinds compete on score.
+      TargetPlanner(TargetPlannerConfig{}, kRes).Plan(map, grid, {15, 24}, {15, 24}, &nothing_seen, 0.0);
+  EXPECT_TRUE(std::any_of(both.candidates.begin(), both.candidates.end(),
+                          [](const TargetCandidate& c) { return c.kind == TargetKind::kInspection; }));
 }
 
 TEST(TargetPlanner, FrontierViewpointsKeepTheFloorBlindDistance) {
