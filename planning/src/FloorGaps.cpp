@@ -97,4 +97,29 @@ int AssumeFloorAround(GridMap& map, double x_m, double y_m, double radius_m) {
   return filled;
 }
 
+int ExtendHolesIntoUnknown(GridMap& map, double radius_m) {
+  const int r = static_cast<int>(std::floor(radius_m / map.resolution_m));
+  if (r <= 0) return 0;
+  std::vector<int> marked;
+  for (int y = 0; y < map.height; ++y) {
+    for (int x = 0; x < map.width; ++x) {
+      if (map.At({x, y}) != CellState::kHole) continue;
+      for (int dy = -r; dy <= r; ++dy) {
+        for (int dx = -r; dx <= r; ++dx) {
+          const GridIndex c{x + dx, y + dy};
+          if (dx * dx + dy * dy > r * r || !map.Contains(c)) continue;
+          if (map.At(c) == CellState::kUnknown) marked.push_back(map.Index(c));
+        }
+      }
+    }
+  }
+  int n = 0;
+  for (const int i : marked) {
+    if (map.cells[i] != CellState::kUnknown) continue;
+    map.cells[i] = CellState::kHole;
+    ++n;
+  }
+  return n;
+}
+
 }  // namespace dynamap::planning

@@ -86,5 +86,22 @@ TEST(AssumeFloorAround, StopsAtWallsAndHoles) {
   EXPECT_EQ(map.At({20, 31}), CellState::kUnknown);  // Beyond the radius.
 }
 
+TEST(ExtendHolesIntoUnknown, UnseenCellsAtAStairPitsEdgeBecomeHole) {
+  GridMap map(40, 40, kRes, CellState::kNavigable);
+  for (int y = 10; y < 30; ++y) {
+    for (int x = 20; x < 30; ++x) map.Set({x, y}, CellState::kHole);
+  }
+  for (int y = 30; y < 40; ++y) {
+    for (int x = 15; x < 35; ++x) map.Set({x, y}, CellState::kUnknown);  // Edge not seen.
+  }
+  map.Set({5, 5}, CellState::kUnknown);  // Unknown far from the pit stays unknown.
+  EXPECT_GT(ExtendHolesIntoUnknown(map, 0.36), 0);
+  EXPECT_EQ(map.At({25, 30}), CellState::kHole);  // Next to the pit.
+  EXPECT_EQ(map.At({25, 36}), CellState::kHole);  // 7 cells = 0.35 m from it.
+  EXPECT_EQ(map.At({25, 38}), CellState::kUnknown);  // 0.45 m: beyond the radius.
+  EXPECT_EQ(map.At({5, 5}), CellState::kUnknown);
+  EXPECT_EQ(map.At({19, 20}), CellState::kNavigable);  // Seen floor is never changed.
+}
+
 }  // namespace
 }  // namespace dynamap::planning

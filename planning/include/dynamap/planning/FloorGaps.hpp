@@ -23,4 +23,10 @@ int CloseWallGaps(GridMap& map, double max_gap_m);
 // operator put it down on, never the far side of a wall. Returns the cells marked.
 int AssumeFloorAround(GridMap& map, double x_m, double y_m, double radius_m);
 
+// Unknown cells within `radius_m` of a hole cell become hole: a stair pit's edge is seen
+// only where free space below it was observed, and unknown cells are inflated less than
+// the robot's radius, so without this a path may run with the footprint over the unseen
+// part of the edge. Returns the cells marked.
+int ExtendHolesIntoUnknown(GridMap& map, double radius_m);
+
 }  // namespace dynamap::planning
