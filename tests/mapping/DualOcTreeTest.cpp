@@ -26,12 +26,17 @@ robotio::DepthRays SingleRay(const Eigen::Vector3f& origin, const Eigen::Vector3
   return rays;
 }
 
-TEST(DualOcTreeTest, SaveLoadRoundTripKeepsBothChannelsExactly) {
-  DualMap map{ThesisRuleConfig()};
-  testing::SyntheticScene scene;
+// An empty scene scanned, then a box appearing in it: both channels hold something.
+void ScanABoxAppearing(DualMap& map, testing::SyntheticScene& scene) {
   map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
   scene.boxes.push_back({{1.5f, -0.2f, -0.5f}, {1.8f, 0.2f, 1.2f}});
   map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
+}
+
+TEST(DualOcTreeTest, SaveLoadRoundTripKeepsBothChannelsExactly) {
+  DualMap map{ThesisRuleConfig()};
+  testing::SyntheticScene scene;
+  ScanABoxAppearing(map, scene);
   ASSERT_TRUE(map.IsDynamicOccupied({1.52f, 0.0f, 0.0f}));
 
   const std::string file = ::testing::TempDir() + "/dual_roundtrip.ot";
@@ -54,9 +59,7 @@ TEST(DualOcTreeTest, SaveLoadRoundTripKeepsBothChannelsExactly) {
 TEST(DualOcTreeTest, CloneIsAnIndependentCopyOfBothChannels) {
   DualMap map{ThesisRuleConfig()};
   testing::SyntheticScene scene;
-  map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
-  scene.boxes.push_back({{1.5f, -0.2f, -0.5f}, {1.8f, 0.2f, 1.2f}});
-  map.InsertRays(testing::CastScan(scene, {0, 0, 0}, 4.0f, 2.0f));
+  ScanABoxAppearing(map, scene);
   ASSERT_TRUE(map.IsDynamicOccupied({1.52f, 0.0f, 0.0f}));
   const std::unique_ptr<DualOcTree> copy = map.tree().Clone();
   EXPECT_EQ(copy->size(), map.tree().size());
