@@ -9,13 +9,7 @@ namespace dynamap::planning {
 
 namespace {
 
-// Morphological closing of the cells in `state`; unknown cells it covers take that state.
-int CloseUnknownGaps(GridMap& map, CellState state, double max_gap_m, bool thin) {
-  if (map.width == 0 || map.height == 0 || max_gap_m <= 0.0) return 0;
-  // Odd kernel size covering the gap: a gap of n cells needs a disc n + 1 cells across.
-  const int gap_cells = static_cast<int>(std::floor(max_gap_m / map.resolution_m));
-  if (gap_cells < 1) return 0;
-  const int size = 2 * ((gap_cells + 2) / 2) + 1;
+cv::Mat MaskOf(const GridMap& map, CellState state) {
   cv::Mat mask(map.height, map.width, CV_8UC1);
   for (int y = 0; y < map.height; ++y) {
     auto* row = mask.ptr<std::uint8_t>(y);
@@ -23,6 +17,33 @@ int CloseUnknownGaps(GridMap& map, CellState state, double max_gap_m, bool thin)
       row[x] = map.cells[static_cast<std::size_t>(y) * map.width + x] == state ? 255 : 0;
     }
   }
+  return mask;
+}
+
+// Unknown cells under the mask take `state`; returns how many.
+int FillUnknown(GridMap& map, const cv::Mat& mask, CellState state) {
+  int filled = 0;
+  for (int y = 0; y < map.height; ++y) {
+    const auto* row = mask.ptr<std::uint8_t>(y);
+    for (int x = 0; x < map.width; ++x) {
+      CellState& cell = map.cells[static_cast<std::size_t>(y) * map.width + x];
+      if (row[x] != 0 && cell == CellState::kUnknown) {
+        cell = state;
+        ++filled;
+      }
+    }
+  }
+  return filled;
+}
+
+// Morphological closing of the cells in `state`; unknown cells it covers take that state.
+int CloseUnknownGaps(GridMap& map, CellState state, double max_gap_m, bool thin) {
+  if (map.width == 0 || map.height == 0 || max_gap_m <= 0.0) return 0;
+  // Odd kernel size covering the gap: a gap of n cells needs a disc n + 1 cells across.
+  const int gap_cells = static_cast<int>(std::floor(max_gap_m / map.resolution_m));
+  if (gap_cells < 1) return 0;
+  const int size = 2 * ((gap_cells + 2) / 2) + 1;
+  const cv::Mat mask = MaskOf(map, state);
   cv::Mat closed;
   // Outside the grid counts as not in `state`, so the closing never pulls cells in from
   // beyond the border.
@@ -44,18 +65,7 @@ int CloseUnknownGaps(GridMap& map, CellState state, double max_gap_m, bool thin)
     cv::flip(diagonal, anti, 1);
     closed = close(horizontal) | close(vertical) | close(diagonal) | close(anti);
   }
-  int filled = 0;
-  for (int y = 0; y < map.height; ++y) {
-    const auto* row = closed.ptr<std::uint8_t>(y);
-    for (int x = 0; x < map.width; ++x) {
-      CellState& cell = map.cells[static_cast<std::size_t>(y) * map.width + x];
-      if (row[x] != 0 && cell == CellState::kUnknown) {
-        cell = state;
-        ++filled;
-      }
-    }
-  }
-  return filled;
+  return FillUnknown(map, closed, state);
 }
 
 }  // namespace
@@ -99,27 +109,12 @@ int AssumeFloorAround(GridMap& map, double x_m, double y_m, double radius_m) {
 
 int ExtendHolesIntoUnknown(GridMap& map, double radius_m) {
   const int r = static_cast<int>(std::floor(radius_m / map.resolution_m));
-  if (r <= 0) return 0;
-  std::vector<int> marked;
-  for (int y = 0; y < map.height; ++y) {
-    for (int x = 0; x < map.width; ++x) {
-      if (map.At({x, y}) != CellState::kHole) continue;
-      for (int dy = -r; dy <= r; ++dy) {
-        for (int dx = -r; dx <= r; ++dx) {
-          const GridIndex c{x + dx, y + dy};
-          if (dx * dx + dy * dy > r * r || !map.Contains(c)) continue;
-          if (map.At(c) == CellState::kUnknown) marked.push_back(map.Index(c));
-        }
-      }
-    }
-  }
-  int n = 0;
-  for (const int i : marked) {
-    if (map.cells[i] != CellState::kUnknown) continue;
-    map.cells[i] = CellState::kHole;
-    ++n;
-  }
-  return n;
+  if (r <= 0 || map.width == 0 || map.height == 0) return 0;
+  cv::Mat grown;
+  cv::dilate(MaskOf(map, CellState::kHole), grown,
+             cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1)),
+             cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+  return FillUnknown(map, grown, CellState::kHole);
 }
 
 }  // namespace dynamap::planning

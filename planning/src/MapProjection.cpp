@@ -92,8 +92,8 @@ std::vector<int> MapProjector::ExpireDynamicObstacles(const VoxelMapView& view, 
   if (config_.dynamic_obstacle_ttl_s <= 0.0) return {};
   std::vector<int> expired;
   for (const int i : dynamic_cells_) {
-    // Released cells keep their time (so a later touch does not re-stamp them) but are not
-    // re-projected again on every call.
+    // Released cells keep their time (a scan passing over them does not re-stamp them,
+    // only one hitting something there: Refresh) and are not re-projected on every call.
     if (now_s - dynamic_since_s_[i] > config_.dynamic_obstacle_ttl_s &&
         map_.cells[i] == CellState::kObstacle) {
       expired.push_back(i);
