@@ -34,6 +34,13 @@ SimulatorConfig Config(std::uint64_t seed) {
   return config;
 }
 
+// Motion, collisions and people only: no Kinect frames are rendered.
+SimulatorConfig Proprioceptive(std::uint64_t seed) {
+  SimulatorConfig config = Config(seed);
+  config.render_depth = false;
+  return config;
+}
+
 TEST(Simulator, FrameShowsThePoseLatencyBeforeDelivery) {
   const World world = testing::MustParse(testing::WallWorldYaml(3.0));
   Simulator simulator(world, QuietRobot(), SmallRig(0.1), Config(3));
@@ -121,8 +128,7 @@ TEST(Simulator, EncoderScaleErrorShowsInOdometry) {
   RobotConfig robot = QuietRobot();
   robot.encoder_scale_error_left = 0.02;
   robot.encoder_scale_error_right = -0.015;
-  SimulatorConfig config = Config(1);
-  config.render_depth = false;
+  SimulatorConfig config = Proprioceptive(1);
   Simulator simulator(world, robot, SmallRig(0.1), config);
   simulator.SetCommand({0, 0.5, 0.3});
   SimOutput out = simulator.Advance(4.0);
@@ -151,8 +157,7 @@ TEST(Simulator, EncoderScaleErrorShowsInOdometry) {
 
 TEST(Simulator, DrivingIntoAWallIsACollisionWithoutPenetration) {
   const World world = testing::MustParse(testing::WallWorldYaml(2.0));
-  SimulatorConfig config = Config(1);
-  config.render_depth = false;
+  SimulatorConfig config = Proprioceptive(1);
   RobotConfig robot;
   Simulator simulator(world, robot, SmallRig(0.1), config);
   simulator.SetCommand({0, 1.0, 0.0});
@@ -208,8 +213,7 @@ std::string WalkerThroughTheRobot(const std::string& yields) {
 
 TEST(Simulator, PeopleWaitForTheRobotInsteadOfWalkingIntoIt) {
   const World world = testing::MustParse(WalkerThroughTheRobot(""));
-  SimulatorConfig config = Config(2);
-  config.render_depth = false;
+  SimulatorConfig config = Proprioceptive(2);
   const RobotConfig robot;
   Simulator simulator(world, robot, SmallRig(0.1), config);
   (void)simulator.Advance(4.0);
@@ -231,8 +235,7 @@ TEST(Simulator, PeopleWaitForTheRobotInsteadOfWalkingIntoIt) {
 
 TEST(Simulator, APersonGivesWayToARobotThatStaysInItsWayThenWalksOn) {
   const World world = testing::MustParse(WalkerThroughTheRobot(""));
-  SimulatorConfig config = Config(2);
-  config.render_depth = false;
+  SimulatorConfig config = Proprioceptive(2);
   const RobotConfig robot;
   Simulator simulator(world, robot, SmallRig(0.1), config);
   // Waits 5 s, then walks back until 1.5 m from the robot's footprint, and stands there.
@@ -253,8 +256,7 @@ TEST(Simulator, APersonGivesWayToARobotThatStaysInItsWayThenWalksOn) {
 
 TEST(Simulator, APersonWhoDoesNotYieldWalksIntoTheStandingRobot) {
   const World world = testing::MustParse(WalkerThroughTheRobot("yields: false, "));
-  SimulatorConfig config = Config(2);
-  config.render_depth = false;
+  SimulatorConfig config = Proprioceptive(2);
   Simulator simulator(world, RobotConfig{}, SmallRig(0.1), config);
   const SimOutput out = simulator.Advance(6.0);
   ASSERT_EQ(out.collisions.size(), 1u);
