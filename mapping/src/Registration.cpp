@@ -1,5 +1,6 @@
 #include "dynamap/mapping/Registration.hpp"
 
+#include <pcl/console/print.h>
 #include <pcl/features/normal_3d.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -87,7 +88,12 @@ struct Registration::Impl {
 };
 
 Registration::Registration(RegistrationConfig config)
-    : config_(config), impl_(std::make_unique<Impl>()) {}
+    : config_(config), impl_(std::make_unique<Impl>()) {
+  // A failed alignment is told by RegistrationResult; PCL would also print an error line
+  // for every scan without enough correspondences (a robot turning towards unmapped
+  // space), tens per second through the progress line.
+  pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+}
 Registration::~Registration() = default;
 Registration::Registration(Registration&&) noexcept = default;
 Registration& Registration::operator=(Registration&&) noexcept = default;

@@ -3,7 +3,6 @@
 #include <octomap/octomap_types.h>
 
 #include <Eigen/Eigenvalues>
-
 #include <chrono>
 #include <cmath>
 #include <utility>
@@ -76,6 +75,9 @@ SlamConfig ParseSlamConfig(robotio::ConfigNode& node) {
   node.Read("max_correction_rad", &config.max_correction_rad, 0.0, 3.2);
   node.Read("max_correction_per_rad", &config.max_correction_per_rad, 0.0, 5.0);
   node.Read("map_reference_radius_m", &config.map_reference_radius_m, 0.5, 50.0);
+  node.Read("reference_refresh_m", &config.reference_refresh_m, 0.0, 10.0);
+  node.Read("reference_max_age_s", &config.reference_max_age_s, 0.0, 60.0);
+  node.Read("registration_voxel_m", &config.registration_voxel_m, 0.0, 1.0);
   int min_scan = static_cast<int>(config.min_scan_points);
   int min_reference = static_cast<int>(config.min_reference_points);
   node.Read("min_scan_points", &min_scan, 10, 1'000'000);
@@ -92,7 +94,8 @@ SlamLoop::SlamLoop(SlamConfig config, const MappingConfig& mapping, robotio::Rig
     : config_(std::move(config)),
       rig_(std::move(rig)),
       map_(mapping),
-      registration_(config_.registration) {
+      map_registration_(config_.registration),
+      previous_registration_(config_.registration) {
   for (auto& mount : rig_.kinects) {
     mount.max_range_m = std::min(mount.max_range_m, mapping.max_range_m);
   }
@@ -112,25 +115,38 @@ robotio::PointList SlamLoop::MapReference(const robotio::Pose2D& around) const {
     const octomap::point3d c = it.getCoordinate();
     points.emplace_back(c.x(), c.y(), c.z());
   }
+  if (config_.registration_voxel_m > 0.0)
+    return VoxelGridFilter(points, config_.registration_voxel_m);
   return points;
 }
 
+bool SlamLoop::UpdateMapTarget(const robotio::Pose2D& predicted, std::int64_t stamp_ns) {
+  const bool fresh =
+      reference_centre_ &&
+      std::hypot(predicted.x - reference_centre_->x, predicted.y - reference_centre_->y) <
+          config_.reference_refresh_m &&
+      static_cast<double>(stamp_ns - reference_stamp_ns_) * 1e-9 < config_.reference_max_age_s;
+  if (fresh) return false;
+  map_registration_.SetTarget(MapReference(predicted));
+  reference_centre_ = predicted;
+  reference_stamp_ns_ = stamp_ns;
+  return true;
+}
+
 bool SlamLoop::Acceptable(const RegistrationResult& result, const robotio::Pose2D& predicted,
-                          const robotio::Pose2D& increment) const {
+                          const robotio::Pose2D& corrected, const Motion& since) const {
   if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
       result.fitness_rmse_m > config_.max_fitness_rmse_m) {
     return false;
   }
-  // The gyro and wheels are good over one frame interval: a correction much larger than
-  // what they could have got wrong is a registration into the wrong minimum.
-  const robotio::Pose2D correction =
-      predicted.Between(robotio::Pose2D::FromIsometry(result.T_target_source));
-  const double driven = std::hypot(increment.x, increment.y);
-  const double turned = std::abs(increment.theta);
+  // The gyro and wheels are good over short motions: a correction much larger than what
+  // they could have got wrong is a registration into the wrong minimum. Only the
+  // directions the scan constrains count (along a corridor ICP slides freely).
+  const robotio::Pose2D correction = predicted.Between(corrected);
   return std::hypot(correction.x, correction.y) <=
-             config_.max_correction_m + config_.max_correction_per_m * driven &&
+             config_.max_correction_m + config_.max_correction_per_m * since.driven_m &&
          std::abs(correction.theta) <=
-             config_.max_correction_rad + config_.max_correction_per_rad * turned;
+             config_.max_correction_rad + config_.max_correction_per_rad * since.turned_rad;
 }
 
 SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
@@ -168,28 +184,52 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
   // Lines 6-10: register against the selected reference, keep a plausible correction.
   t = Clock::now();
   step.pose = step.predicted;
-  auto try_reference = [&](const robotio::PointList& reference, const char* name) {
-    if (reference.size() < config_.min_reference_points) return false;
-    registration_.SetTarget(reference);
-    step.registration = registration_.Align(scan, step.predicted.ToIsometry());
+  // Thinned for ICP: a coarser scan and target register as well (the map update below
+  // uses every pixel) in a fraction of the time.
+  const robotio::PointList sparse = config_.registration_voxel_m > 0.0
+                                        ? VoxelGridFilter(scan, config_.registration_voxel_m)
+                                        : scan;
+  // A map registration is checked against odometry alone since the last accepted one
+  // (with what odometry may have got wrong over that motion): neither scan-to-scan
+  // corrections in between nor a stretch without a usable map can lock it out. A
+  // previous-scan registration is checked against this scan's prediction.
+  map_motion_.driven_m += std::hypot(increment.x, increment.y);
+  map_motion_.turned_rad += std::abs(increment.theta);
+  map_prediction_ = map_prediction_ ? map_prediction_->Compose(increment) : step.predicted;
+  const Motion scan_motion{std::hypot(increment.x, increment.y), std::abs(increment.theta)};
+  auto try_reference = [&](const Registration& registration, const char* name,
+                           const robotio::Pose2D& prediction, const Motion& motion) {
+    if (registration.target_size() < config_.min_reference_points) return false;
+    step.registration = registration.Align(sparse, step.predicted.ToIsometry());
     step.registered = true;
     step.reference = name;
-    if (!Acceptable(step.registration, step.predicted, increment)) return false;
-    step.pose = ConstrainedCorrection(step.predicted,
-                                      robotio::Pose2D::FromIsometry(step.registration.T_target_source),
-                                      step.registration.planar_information,
-                                      config_.degenerate_eigen_ratio);
+    const robotio::Pose2D corrected = ConstrainedCorrection(
+        prediction, robotio::Pose2D::FromIsometry(step.registration.T_target_source),
+        step.registration.planar_information, config_.degenerate_eigen_ratio);
+    if (!Acceptable(step.registration, prediction, corrected, motion)) return false;
+    step.pose = corrected;
     step.accepted = true;
     return true;
   };
   if (scan.size() >= config_.min_scan_points) {
     const bool use_map = config_.reference != ReferenceStrategy::kPrevious;
     const bool use_previous = config_.reference != ReferenceStrategy::kMap;
-    const bool done = use_map && try_reference(MapReference(step.predicted), "map");
-    if (!done && use_previous) try_reference(previous_scan_map_, "previous");
+    bool done = false;
+    if (use_map) {
+      step.reference_rebuilt = UpdateMapTarget(step.predicted, frames.front().stamp_ns);
+      done = try_reference(map_registration_, "map", *map_prediction_, map_motion_);
+    }
+    if (!done && use_previous) {
+      previous_registration_.SetTarget(previous_scan_map_);
+      try_reference(previous_registration_, "previous", step.predicted, scan_motion);
+    }
   }
   step.register_s = SecondsSince(t);
   pose_ = step.pose;
+  if (step.accepted && step.reference == "map") {
+    map_prediction_ = pose_;
+    map_motion_ = {};
+  }
 
   // Line 11: both maps from the corrected pose, every frame at its own capture time.
   t = Clock::now();
@@ -199,14 +239,14 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
     map_.InsertDepthFrame(frames[k], rig_.kinects[sensor],
                           pose_.Compose(frame_offsets[k]).ToIsometry());
   }
-  previous_scan_map_ = Transformed(scan, pose_);
+  previous_scan_map_ = Transformed(sparse, pose_);
   step.update_s = SecondsSince(t);
   return step;
 }
 
-std::vector<std::vector<std::size_t>> GroupIntoScans(const std::vector<std::int64_t>& capture_stamps_ns,
-                                                     const std::vector<int>& sensor_ids,
-                                                     std::int64_t max_span_ns) {
+std::vector<std::vector<std::size_t>> GroupIntoScans(
+    const std::vector<std::int64_t>& capture_stamps_ns, const std::vector<int>& sensor_ids,
+    std::int64_t max_span_ns) {
   std::vector<std::vector<std::size_t>> scans;
   std::int64_t group_start = 0;
   for (std::size_t i = 0; i < capture_stamps_ns.size(); ++i) {

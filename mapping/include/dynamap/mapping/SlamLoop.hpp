@@ -33,19 +33,30 @@ struct SlamConfig {
   bool filter_dynamic = true;
   double min_inlier_ratio = 0.6;     // Share of scan points with a partner, to accept.
   double max_fitness_rmse_m = 0.06;  // m, RMS point distance after ICP, to accept.
-  // Plausibility: the correction to the odometry prediction may not exceed
-  // abs + per-metre · distance driven (and likewise for heading) since the last scan.
-  double max_correction_m = 0.01;           // m.
-  double max_correction_per_m = 0.2;        // m per m driven.
-  double max_correction_rad = 0.005;        // rad.
-  double max_correction_per_rad = 0.2;      // rad per rad turned (gyro).
+  // Plausibility: the correction to odometry (in the directions the scan constrains) may
+  // not exceed abs + per-metre · distance driven (and likewise for heading) since the
+  // last accepted map registration (map target) or the last scan (previous scan).
+  double max_correction_m = 0.01;       // m.
+  double max_correction_per_m = 0.2;    // m per m driven.
+  double max_correction_rad = 0.005;    // rad.
+  double max_correction_per_rad = 0.2;  // rad per rad turned (gyro).
   // Directions of the (x, y, yaw) correction whose information eigenvalue is below this
   // share of the largest keep the odometry prediction (a corridor does not fix motion
   // along it). 0 applies the whole correction.
   double degenerate_eigen_ratio = 0.05;
-  double map_reference_radius_m = 5.0;      // m, map voxels this close (x/y) form the target.
-  std::size_t min_scan_points = 200;        // Fewer preprocessed points: no registration.
-  std::size_t min_reference_points = 500;   // Fewer map voxels: the map is not yet usable.
+  double map_reference_radius_m = 5.0;  // m, map voxels this close (x/y) form the target.
+  // The map target (voxels, k-d tree, normals) is kept between scans, as KISS-ICP keeps
+  // its local map, and rebuilt once the robot is this far from where it was built (the
+  // scan must stay inside it) or it is this old. Kept for 1 s, people who had stood still
+  // long enough to be static stayed in it after they left: a robot standing in a crowd
+  // drifted 0.42 m in 20 s (0.01 m with 0.1 s; docs/RESULTS.md).
+  double reference_refresh_m = 0.5;  // m.
+  double reference_max_age_s = 0.1;  // s of capture time.
+  // Leaf of the voxel grid thinning the scan and the map target for ICP only (the map
+  // update uses every pixel); 0 registers the preprocessed scan as it is.
+  double registration_voxel_m = 0.1;       // m.
+  std::size_t min_scan_points = 200;       // Fewer preprocessed points: no registration.
+  std::size_t min_reference_points = 500;  // Fewer map voxels: the map is not yet usable.
 };
 
 // Reads a "slam:" mapping (reference, filter_dynamic, acceptance gates and a nested
@@ -63,6 +74,7 @@ struct SlamStep {
   std::size_t scan_points = 0;  // After preprocessing.
   double preprocess_s = 0.0;    // Wall time of each stage.
   double register_s = 0.0;
+  bool reference_rebuilt = false;  // The map target was rebuilt for this scan.
   double update_s = 0.0;
 };
 
@@ -82,17 +94,31 @@ class SlamLoop {
   [[nodiscard]] const SlamConfig& config() const { return config_; }
 
  private:
+  // Occupied static voxel centres near `around`, thinned to the registration voxel.
   [[nodiscard]] robotio::PointList MapReference(const robotio::Pose2D& around) const;
+  // Rebuilds the map target when it is too far or too old; true when it did.
+  bool UpdateMapTarget(const robotio::Pose2D& predicted, std::int64_t stamp_ns);
+  struct Motion {
+    double driven_m = 0.0;
+    double turned_rad = 0.0;
+  };
+  // Whether a registration is good and its `corrected` pose (degenerate directions
+  // removed) within what odometry may have got wrong over `since` from `predicted`.
   [[nodiscard]] bool Acceptable(const RegistrationResult& result, const robotio::Pose2D& predicted,
-                                const robotio::Pose2D& increment) const;
+                                const robotio::Pose2D& corrected, const Motion& since) const;
 
   SlamConfig config_;
   robotio::Rig rig_;
   DualMap map_;
-  Registration registration_;
-  robotio::Pose2D pose_;                            // T_map_base at the last scan.
-  std::optional<robotio::Pose2D> last_odometry_;    // Odometry pose at the last scan.
-  robotio::PointList previous_scan_map_;            // Last scan's points in the map frame.
+  Registration map_registration_;                    // Target: the map around reference_centre_.
+  Registration previous_registration_;               // Target: the previous scan (rebuilt per use).
+  std::optional<robotio::Pose2D> reference_centre_;  // Where the map target was built.
+  std::int64_t reference_stamp_ns_ = 0;              // Capture time it was built at.
+  Motion map_motion_;  // Driven and turned since the last accepted map registration.
+  std::optional<robotio::Pose2D> map_prediction_;  // That pose moved by odometry alone.
+  robotio::Pose2D pose_;                           // T_map_base at the last scan.
+  std::optional<robotio::Pose2D> last_odometry_;   // Odometry pose at the last scan.
+  robotio::PointList previous_scan_map_;           // Last scan's points in the map frame.
 };
 
 // Frames (sorted by capture stamp) grouped into scans of one instant: a group ends when a
