@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+#include <utility>
 
 #include "dynamap/mapping/DualMap.hpp"
 #include "dynamap/planning/DualMapView.hpp"
@@ -56,6 +58,42 @@ TEST(DualMapProjection, TouchedColumnsFollowTheRaysFootprint) {
   const std::vector<Eigen::Vector2f> columns = TouchedColumns(rays, area);
   EXPECT_EQ(columns.size(), 11u);  // Cells x = 0..10 of row 0.
   for (const Eigen::Vector2f& c : columns) EXPECT_NEAR(c.y(), 0.05f, 1e-6f);
+}
+
+// A frame's worth of rays (a 1 rad fan, lengths varying as over furniture and floor): the
+// columns found are those the rays really cross (each ray walked alone), nearly all of
+// them, though only the longest ray per narrow bearing bin is walked.
+TEST(DualMapProjection, TouchedColumnsOfAFanAreThoseItsRaysCross) {
+  GridMap area(200, 200, 0.05);
+  area.origin_x_m = -5.0;
+  area.origin_y_m = -5.0;
+  robotio::DepthRays fan;
+  fan.origin = Eigen::Vector3f(0.01f, 0.02f, 0.6f);
+  for (int v = 0; v < 60; ++v) {
+    for (int u = 0; u < 160; ++u) {
+      const double bearing = -0.5 + u / 160.0 + 0.002 * v;  // Rows bend slightly.
+      const double length = 0.6 + 3.8 * ((u * 7 + v * 13) % 100) / 100.0;
+      fan.ends.emplace_back(fan.origin.x() + length * std::cos(bearing),
+                            fan.origin.y() + length * std::sin(bearing), 0.0f);
+      fan.hit.push_back(true);
+    }
+  }
+  std::set<std::pair<float, float>> exact;
+  for (std::size_t i = 0; i < fan.ends.size(); ++i) {
+    robotio::DepthRays one;
+    one.origin = fan.origin;
+    one.ends = {fan.ends[i]};
+    one.hit = {true};
+    for (const Eigen::Vector2f& c : TouchedColumns(one, area)) exact.insert({c.x(), c.y()});
+  }
+  const std::vector<Eigen::Vector2f> found = TouchedColumns(fan, area);
+  std::set<std::pair<float, float>> unique;
+  for (const Eigen::Vector2f& c : found) {
+    EXPECT_TRUE(exact.count({c.x(), c.y()})) << c.transpose();
+    unique.insert({c.x(), c.y()});
+  }
+  EXPECT_EQ(unique.size(), found.size());  // Each column once.
+  EXPECT_GE(static_cast<double>(found.size()), 0.97 * static_cast<double>(exact.size()));
 }
 
 TEST(DualMapProjection, HitColumnsAreWhereRaysEndedOnAnObstacle) {
