@@ -2,14 +2,13 @@
 
 #include <spdlog/spdlog.h>
 
-#include "Percentile.hpp"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
-#include "dynamap/planning/DualMapView.hpp"
+#include "Percentile.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
+#include "dynamap/planning/DualMapView.hpp"
 #include "dynamap/robotio/DepthProjection.hpp"
 #include "dynamap/robotio/Time.hpp"
 
@@ -19,6 +18,18 @@ namespace {
 constexpr int kInspectionRaysPerRow = 160;
 }  // namespace
 
+namespace {
+
+// Longest capture-time span of one scan: three quarters of the fastest Kinect's period,
+// as `dynamap map` groups a recording.
+std::int64_t ScanSpan(const robotio::Rig& rig) {
+  double rate_hz = 0.0;
+  for (const auto& k : rig.kinects) rate_hz = std::max(rate_hz, k.rate_hz);
+  return rate_hz > 0.0 ? robotio::SecondsToNanos(0.75 / rate_hz) : 0;
+}
+
+}  // namespace
+
 MappingWorker::MappingWorker(Mediator& mediator, robotio::Rig rig, MappingWorkerConfig config)
     : mediator_(mediator),
       rig_(std::move(rig)),
@@ -26,7 +37,8 @@ MappingWorker::MappingWorker(Mediator& mediator, robotio::Rig rig, MappingWorker
       map_(config_.mapping),
       projector_(config_.area, config_.projection),
       accuracy_(config_.mapping.resolution_m, config_.mapping.max_range_m,
-                config_.evaluation_stride) {
+                config_.evaluation_stride),
+      scans_(static_cast<int>(rig_.kinects.size()), ScanSpan(rig_)) {
   if (config_.poses == PoseSource::kSlam) slam_.emplace(config_.slam, config_.mapping, rig_);
 }
 
@@ -71,9 +83,8 @@ void MappingWorker::Score(const CapturedFrame& frame, const robotio::KinectMount
   }
   const std::vector<Eigen::Vector2f> columns = planning::TouchedColumns(rays, projector_.map());
   touched_.insert(touched_.end(), columns.begin(), columns.end());
-  const std::vector<Eigen::Vector2f> hits =
-      planning::HitColumns(rays, projector_.map(), config_.projection.step_height_m,
-                           config_.projection.robot_height_m);
+  const std::vector<Eigen::Vector2f> hits = planning::HitColumns(
+      rays, projector_.map(), config_.projection.step_height_m, config_.projection.robot_height_m);
   hit_.insert(hit_.end(), hits.begin(), hits.end());
   mediator_.pose_fix.Set({frame.depth.stamp_ns, T_map_base, odometry});
   mediator_.AddEstimate(robotio::ToStampedPose(frame.depth.stamp_ns, T_map_base));
@@ -118,8 +129,8 @@ void MappingWorker::Process(const std::vector<CapturedFrame>& batch) {
   insert_ms_.push_back(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    Score(*frames[i], rig_.kinects[static_cast<std::size_t>(frames[i]->depth.sensor_id)],
-          placed[i], odometry[i]);
+    Score(*frames[i], rig_.kinects[static_cast<std::size_t>(frames[i]->depth.sensor_id)], placed[i],
+          odometry[i]);
   }
 }
 
@@ -139,16 +150,22 @@ void MappingWorker::Reproject() {
 
 void MappingWorker::Run() {
   while (!mediator_.control.stopping()) {
-    const std::vector<CapturedFrame> frames =
+    std::vector<CapturedFrame> frames_taken =
         mediator_.frames.TakeAll(std::chrono::milliseconds(50));
-    if (frames.empty()) continue;
+    if (frames_taken.empty()) continue;
     std::int64_t newest_received = -1;
-    for (const CapturedFrame& frame : frames) {
+    std::int64_t newest_stamp = -1;
+    for (const CapturedFrame& frame : frames_taken) {
       newest_received = std::max(newest_received, frame.depth.received_ns);
+      newest_stamp = std::max(newest_stamp, frame.depth.stamp_ns);
     }
-    Process(frames);
+    // Frames received count as done once taken: a lone frame waiting for its partner must
+    // not hold up a simulation that waits for SLAM.
+    for (const std::vector<CapturedFrame>& scan : scans_.Add(std::move(frames_taken))) {
+      Process(scan);
+    }
     if (!touched_.empty()) Reproject();
-    const std::int64_t now = frames.back().depth.stamp_ns;
+    const std::int64_t now = newest_stamp;
     if (!config_.save_file.empty() &&
         now - last_save_ns_ >= static_cast<std::int64_t>(config_.save_period_s * 1e9)) {
       last_save_ns_ = now;

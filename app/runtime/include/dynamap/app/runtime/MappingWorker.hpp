@@ -13,6 +13,7 @@
 
 #include "dynamap/app/runtime/Mediator.hpp"
 #include "dynamap/app/runtime/MissionConfig.hpp"
+#include "dynamap/app/runtime/ScanAssembler.hpp"
 #include "dynamap/mapping/DualMap.hpp"
 #include "dynamap/mapping/MapEvaluation.hpp"
 #include "dynamap/mapping/SlamLoop.hpp"
@@ -67,6 +68,7 @@ class MappingWorker {
   planning::MapProjector projector_;
   mapping::PointAccuracyCounter accuracy_;
   std::unordered_set<std::uint64_t> inspected_voxels_;
+  ScanAssembler scans_;                   // Both Kinects' frames of one instant together.
   std::vector<Eigen::Vector2f> touched_;  // Columns to re-project after this batch.
   std::vector<Eigen::Vector2f> hit_;      // Columns where this batch hit an obstacle.
   std::vector<double> insert_ms_;
