@@ -61,8 +61,7 @@ TEST(ExplorationMission, MapsAreSavedPeriodicallyWhileTheMissionRuns) {
   (*runtime)->Start();
   // What a killed process leaves: the last periodic save, complete and readable.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
-  while ((*runtime)->Snapshot().sim_time_s < 12.0 &&
-         std::chrono::steady_clock::now() < deadline) {
+  while ((*runtime)->Snapshot().sim_time_s < 12.0 && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   ASSERT_TRUE(fs::exists(out + "/map.ot"));
@@ -82,13 +81,40 @@ TEST(ExplorationMission, MapsAreSavedPeriodicallyWhileTheMissionRuns) {
   EXPECT_GT(cpu.planning_s, 0.0);
   EXPECT_GT(cpu.control_s, 0.0);
   EXPECT_GE(cpu.other_s, 0.0);
-  const double total = cpu.simulation_s + cpu.mapping_s + cpu.planning_s + cpu.control_s +
-                       cpu.other_s;
+  const double total =
+      cpu.simulation_s + cpu.mapping_s + cpu.planning_s + cpu.control_s + cpu.other_s;
   EXPECT_LE(total, report->wall_time_s * std::thread::hardware_concurrency() * 1.05 + 0.1);
 }
 
-// The whole mission, frames placed at the true poses (in-mission SLAM at this image size
-// is not yet good enough: docs/RESULTS.md): three to four minutes of wall time on two
+// The first 30 s of a mission with SLAM poses (the default): the Kinects' staggered frames
+// arrive one at a time and must be registered in pairs (one scan per instant), nearly all
+// registrations accepted. The ATE varies from run to run with the threads' timing (0.008 to
+// 0.060 m in four runs, odometry alone 0.040 to 0.053 m): only a loose bound is asserted.
+TEST(ExplorationMission, SlamRegistersBothKinectsOfAnInstantAsOneScan) {
+  const std::string out = test::ScratchDir();
+  MissionConfig config = SmallOffice(out);
+  config.poses = PoseSource::kSlam;
+  config.max_time_s = 30.0;
+  auto runtime = MissionRuntime::Create(config);
+  ASSERT_TRUE(runtime) << runtime.error().message;
+  (*runtime)->Start();
+  (*runtime)->Wait();
+  const auto report = (*runtime)->Finish();
+  ASSERT_TRUE(report) << report.error().message;
+  const std::int64_t registered = report->registrations_accepted + report->registrations_rejected;
+  std::printf("%lld frames, %lld registrations (%lld accepted), ATE %.3f m, odometry %.3f m\n",
+              static_cast<long long>(report->frames_processed), static_cast<long long>(registered),
+              static_cast<long long>(report->registrations_accepted), report->ate_rmse_m,
+              report->odometry_ate_rmse_m);
+  ASSERT_GT(report->frames_processed, 1000);  // Two Kinects at 30 Hz for 30 s.
+  EXPECT_LE(registered, report->frames_processed / 2 + 5);
+  EXPECT_GE(registered, report->frames_processed * 4 / 10);
+  EXPECT_GE(report->registrations_accepted, registered * 9 / 10);
+  EXPECT_LT(report->ate_rmse_m, 0.1);
+}
+
+// The whole mission, frames placed at the true poses (in-mission SLAM is not yet good
+// enough: docs/RESULTS.md): three to four minutes of wall time on two
 // cores. The thresholds are below the reduced-scale figures measured in docs/RESULTS.md
 // (explored 1.0, surfaces 0.61, DA 0.98-0.99, no collisions on seeds 1-3 at 240 s).
 // Completion is reported, not asserted: with inspection targets the default planner is
@@ -118,9 +144,8 @@ TEST(ExplorationMission, ExploresTheSmallOffice) {
   EXPECT_LE(report->collisions, 1);  // None measured; one contact is a warning, two a bug.
   // It replans as it goes (every 0.5 s unless it is waiting for a turn to finish).
   EXPECT_GE(report->plans, static_cast<std::int64_t>(report->mission_time_s / 2.0));
-  for (const char* file : {"map.ot", "static.bt", "dynamic.bt", "trajectory.tum",
-                           "groundtruth.tum", "map2d.png", "map2d.pgm", "map2d.yaml",
-                           "report.json"}) {
+  for (const char* file : {"map.ot", "static.bt", "dynamic.bt", "trajectory.tum", "groundtruth.tum",
+                           "map2d.png", "map2d.pgm", "map2d.yaml", "report.json"}) {
     EXPECT_TRUE(fs::exists(out + "/" + file)) << file;
   }
 }
