@@ -88,8 +88,8 @@ TEST(ExplorationMission, MapsAreSavedPeriodicallyWhileTheMissionRuns) {
 
 // The first 30 s of a mission with SLAM poses (the default): the Kinects' staggered frames
 // arrive one at a time and must be registered in pairs (one scan per instant), nearly all
-// registrations accepted. The ATE varies from run to run with the threads' timing (0.008 to
-// 0.060 m in four runs, odometry alone 0.040 to 0.053 m): only a loose bound is asserted.
+// registrations accepted. The ATE varies from run to run (0.008 to 0.060 m in four runs,
+// odometry alone 0.040 to 0.053 m): only a loose bound is asserted.
 TEST(ExplorationMission, SlamRegistersBothKinectsOfAnInstantAsOneScan) {
   const std::string out = test::ScratchDir();
   MissionConfig config = SmallOffice(out);
