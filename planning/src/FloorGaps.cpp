@@ -2,23 +2,14 @@
 
 #include <cmath>
 #include <cstdint>
-#include <vector>
 #include <opencv2/imgproc.hpp>
+#include <vector>
+
+#include "GridMask.hpp"
 
 namespace dynamap::planning {
 
 namespace {
-
-cv::Mat MaskOf(const GridMap& map, CellState state) {
-  cv::Mat mask(map.height, map.width, CV_8UC1);
-  for (int y = 0; y < map.height; ++y) {
-    auto* row = mask.ptr<std::uint8_t>(y);
-    for (int x = 0; x < map.width; ++x) {
-      row[x] = map.cells[static_cast<std::size_t>(y) * map.width + x] == state ? 255 : 0;
-    }
-  }
-  return mask;
-}
 
 // Unknown cells under the mask take `state`; returns how many.
 int FillUnknown(GridMap& map, const cv::Mat& mask, CellState state) {
@@ -49,8 +40,8 @@ int CloseUnknownGaps(GridMap& map, CellState state, double max_gap_m, bool thin)
   // beyond the border.
   const auto close = [&](const cv::Mat& kernel) {
     cv::Mat out;
-    cv::morphologyEx(mask, out, cv::MORPH_CLOSE, kernel, cv::Point(-1, -1), 1,
-                     cv::BORDER_CONSTANT, cv::Scalar(0));
+    cv::morphologyEx(mask, out, cv::MORPH_CLOSE, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT,
+                     cv::Scalar(0));
     return out;
   };
   if (!thin) {

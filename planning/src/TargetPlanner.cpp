@@ -4,6 +4,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "GridMask.hpp"
 #include "dynamap/planning/CostToGo.hpp"
 #include "dynamap/planning/Visibility.hpp"
 
@@ -15,17 +16,6 @@ struct Region {
   std::vector<int> cells;
   GridIndex center;  // Region cell nearest the centroid.
 };
-
-cv::Mat MaskOf(const GridMap& map, CellState state) {
-  cv::Mat mask(map.height, map.width, CV_8UC1);
-  for (int y = 0; y < map.height; ++y) {
-    auto* row = mask.ptr<std::uint8_t>(y);
-    for (int x = 0; x < map.width; ++x) {
-      row[x] = map.cells[static_cast<std::size_t>(y) * map.width + x] == state ? 255 : 0;
-    }
-  }
-  return mask;
-}
 
 // Connected components (8-connected) of a binary mask with at least `min_cells` cells.
 std::vector<Region> Regions(const GridMap& map, const cv::Mat& mask, int min_cells, int* found) {
@@ -83,8 +73,8 @@ struct Viewpoint {
 // The reachable cell between `min_cells` and `max_cells` from `center` that sees it and
 // has the smallest key(squared distance to the centre, cost to reach it).
 template <typename Key>
-Viewpoint BestViewpoint(const GridMap& map, const std::vector<double>& cost_to_go,
-                        GridIndex center, double min_cells, double max_cells, Key key) {
+Viewpoint BestViewpoint(const GridMap& map, const std::vector<double>& cost_to_go, GridIndex center,
+                        double min_cells, double max_cells, Key key) {
   Viewpoint best;
   double best_key = kInfinity;
   const int r = static_cast<int>(std::ceil(max_cells));
@@ -108,8 +98,8 @@ Viewpoint BestViewpoint(const GridMap& map, const std::vector<double>& cost_to_g
 }
 
 // The cheapest to reach.
-Viewpoint FindViewpoint(const GridMap& map, const std::vector<double>& cost_to_go,
-                        GridIndex center, double min_cells, double max_cells) {
+Viewpoint FindViewpoint(const GridMap& map, const std::vector<double>& cost_to_go, GridIndex center,
+                        double min_cells, double max_cells) {
   return BestViewpoint(map, cost_to_go, center, min_cells, max_cells,
                        [](double, double cost) { return cost; });
 }
@@ -174,7 +164,8 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
   cv::Mat frontier;
   cv::dilate(unknown, frontier, cv::getStructuringElement(cv::MORPH_CROSS, cv::Size(3, 3)));
   cv::bitwise_and(frontier, MaskOf(map, CellState::kNavigable), frontier);
-  const int min_frontier = std::max(1, static_cast<int>(std::ceil(config_.min_frontier_length_m / res)));
+  const int min_frontier =
+      std::max(1, static_cast<int>(std::ceil(config_.min_frontier_length_m / res)));
   ViewCone cone;
   cone.range_m = config_.sensor_range_m;
   cone.min_range_m = config_.min_view_distance_m;
@@ -265,8 +256,8 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
     return decision;
   }
   const double home_distance = std::hypot(robot.x - home.x, robot.y - home.y) * res;
-  decision.kind = home_distance > config_.home_tolerance_m ? TargetKind::kReturnToStart
-                                                           : TargetKind::kDone;
+  decision.kind =
+      home_distance > config_.home_tolerance_m ? TargetKind::kReturnToStart : TargetKind::kDone;
   decision.cell = home;
   return decision;
 }
