@@ -193,10 +193,10 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
   // (with what odometry may have got wrong over that motion): neither scan-to-scan
   // corrections in between nor a stretch without a usable map can lock it out. A
   // previous-scan registration is checked against this scan's prediction.
-  map_motion_.driven_m += std::hypot(increment.x, increment.y);
-  map_motion_.turned_rad += std::abs(increment.theta);
-  map_prediction_ = map_prediction_ ? map_prediction_->Compose(increment) : step.predicted;
   const Motion scan_motion{std::hypot(increment.x, increment.y), std::abs(increment.theta)};
+  map_motion_.driven_m += scan_motion.driven_m;
+  map_motion_.turned_rad += scan_motion.turned_rad;
+  map_prediction_ = map_prediction_ ? map_prediction_->Compose(increment) : step.predicted;
   auto try_reference = [&](const Registration& registration, const char* name,
                            const robotio::Pose2D& prediction, const Motion& motion) {
     if (registration.target_size() < config_.min_reference_points) return false;

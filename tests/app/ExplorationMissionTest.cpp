@@ -27,6 +27,15 @@ MissionConfig SmallOffice(const std::string& out) {
   return config;
 }
 
+// Creates, runs until the mission ends by itself, and scores.
+robotio::Expected<MissionReport> RunToTheEnd(const MissionConfig& config) {
+  auto runtime = MissionRuntime::Create(config);
+  if (!runtime) return runtime.error();
+  (*runtime)->Start();
+  (*runtime)->Wait();
+  return (*runtime)->Finish();
+}
+
 TEST(ExplorationMission, AWorldFileWithAnErrorStopsBeforeTheMissionStarts) {
   const std::string out = test::ScratchDir();
   const std::string world = out + "/broken.yaml";
@@ -95,11 +104,7 @@ TEST(ExplorationMission, SlamRegistersBothKinectsOfAnInstantAsOneScan) {
   MissionConfig config = SmallOffice(out);
   config.poses = PoseSource::kSlam;
   config.max_time_s = 30.0;
-  auto runtime = MissionRuntime::Create(config);
-  ASSERT_TRUE(runtime) << runtime.error().message;
-  (*runtime)->Start();
-  (*runtime)->Wait();
-  const auto report = (*runtime)->Finish();
+  const auto report = RunToTheEnd(config);
   ASSERT_TRUE(report) << report.error().message;
   const std::int64_t registered = report->registrations_accepted + report->registrations_rejected;
   std::printf("%lld frames, %lld registrations (%lld accepted), ATE %.3f m, odometry %.3f m\n",
@@ -124,11 +129,7 @@ TEST(ExplorationMission, ExploresTheSmallOffice) {
   MissionConfig config = SmallOffice(out);
   config.poses = PoseSource::kGroundTruth;
   config.max_time_s = 200.0;
-  auto runtime = MissionRuntime::Create(config);
-  ASSERT_TRUE(runtime) << runtime.error().message;
-  (*runtime)->Start();
-  (*runtime)->Wait();
-  const auto report = (*runtime)->Finish();
+  const auto report = RunToTheEnd(config);
   ASSERT_TRUE(report) << report.error().message;
   std::printf("completed %d in %.0f s, collisions %lld, explored %.3f, surfaces %.3f\n",
               report->completed ? 1 : 0, report->mission_time_s,

@@ -16,9 +16,6 @@ namespace dynamap::app::runtime {
 
 namespace {
 constexpr int kInspectionRaysPerRow = 160;
-}  // namespace
-
-namespace {
 
 // Longest capture-time span of one scan: three quarters of the fastest Kinect's period,
 // as `dynamap map` groups a recording.

@@ -71,10 +71,10 @@ struct SlamStep {
   bool accepted = false;      // Its correction was applied.
   std::string reference;      // "previous" or "map" for the one accepted (else last tried).
   RegistrationResult registration;
+  bool reference_rebuilt = false;  // The map target was rebuilt for this scan.
   std::size_t scan_points = 0;  // After preprocessing.
   double preprocess_s = 0.0;    // Wall time of each stage.
   double register_s = 0.0;
-  bool reference_rebuilt = false;  // The map target was rebuilt for this scan.
   double update_s = 0.0;
 };
 
