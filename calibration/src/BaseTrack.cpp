@@ -25,6 +25,14 @@ std::pair<double, double> WheelsAt(const std::vector<robotio::OdometryReading>& 
   return {a.left_m + s * (b.left_m - a.left_m), a.right_m + s * (b.right_m - a.right_m)};
 }
 
+// Gyro z rate at `t_ns`, from imu[i] (the last sample at or before it) and the next one.
+double RateAt(const std::vector<robotio::ImuReading>& imu, std::size_t i, std::int64_t t_ns) {
+  if (i + 1 >= imu.size() || imu[i].stamp_ns >= t_ns) return imu[i].wz;
+  const double s = static_cast<double>(t_ns - imu[i].stamp_ns) /
+                   static_cast<double>(imu[i + 1].stamp_ns - imu[i].stamp_ns);
+  return imu[i].wz + s * (imu[i + 1].wz - imu[i].wz);
+}
+
 }  // namespace
 
 BaseTrack BaseTrack::Build(const std::vector<robotio::OdometryReading>& odometry,
@@ -53,10 +61,11 @@ BaseTrack BaseTrack::Build(const std::vector<robotio::OdometryReading>& odometry
     if (k > 0) {
       const std::int64_t t0 = track.origin_ns_ + robotio::SecondsToNanos((k - 1) * dt);
       const std::int64_t t1 = track.origin_ns_ + robotio::SecondsToNanos(k * dt);
-      // Gyro rate in force over the step: the last sample at or before its midpoint.
+      // Gyro rate at the step's midpoint, interpolated between the samples around it (each
+      // sample is the rate at its stamp; holding the last one would lag half a period).
       const std::int64_t mid = t0 + (t1 - t0) / 2;
       while (imu_index + 1 < imu.size() && imu[imu_index + 1].stamp_ns <= mid) ++imu_index;
-      const double rate = imu.empty() ? 0.0 : imu[imu_index].wz - config.gyro_bias_rad_s;
+      const double rate = imu.empty() ? 0.0 : RateAt(imu, imu_index, mid) - config.gyro_bias_rad_s;
       const double dtheta = rate * dt;
       const auto [l, r] = WheelsAt(odometry, t1);
       // Each wheel moves the centre by half its distance along the mid-step heading.
