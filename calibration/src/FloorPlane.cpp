@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace dynamap::calibration {
 namespace {
@@ -24,6 +25,23 @@ Cloud::Ptr ToCloud(const robotio::PointList& points) {
   cloud->height = 1;
   cloud->is_dense = true;
   return cloud;
+}
+
+// 1.4826 × the median absolute point-plane distance: the noise sigma of the floor points,
+// unmoved by the minority of non-floor points in the band.
+double RobustSpread(const Cloud& cloud, const pcl::Indices& inliers,
+                    const Eigen::VectorXf& plane) {
+  std::vector<double> distances;
+  distances.reserve(inliers.size());
+  const Eigen::Vector3f n = plane.head<3>();
+  const float norm = n.norm();
+  for (const auto index : inliers) {
+    distances.push_back(std::abs(n.dot(cloud[index].getVector3fMap()) + plane[3]) / norm);
+  }
+  if (distances.empty()) return 0.0;
+  auto middle = distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2);
+  std::nth_element(distances.begin(), middle, distances.end());
+  return 1.4826 * *middle;
 }
 
 }  // namespace
@@ -63,6 +81,20 @@ PlaneFit FitPlane(const robotio::PointList& points, const PlaneFitConfig& config
       coefficients = refined;
       // The refit plane may gather a slightly different inlier set.
       model->selectWithinDistance(coefficients, config.distance_threshold_m, inliers);
+    }
+    // The wide RANSAC band also takes the feet of walls and furniture (up to the band
+    // height above the floor), which lift the plane where they stand. Narrowing the band
+    // to a few times the inliers' own spread and refitting leaves them out.
+    for (int round = 0; round < config.narrowing_rounds; ++round) {
+      const double band = std::clamp(config.narrowing_sigmas * RobustSpread(*cloud, inliers, coefficients),
+                                     config.min_band_m, config.distance_threshold_m);
+      pcl::Indices narrowed;
+      model->selectWithinDistance(coefficients, band, narrowed);
+      if (narrowed.size() < 3) break;
+      model->optimizeModelCoefficients(narrowed, coefficients, refined);
+      if (refined.size() != 4 || !refined.allFinite()) break;
+      coefficients = refined;
+      inliers = std::move(narrowed);
     }
   }
 

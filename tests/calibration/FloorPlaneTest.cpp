@@ -67,6 +67,43 @@ TEST(FloorPlane, FloorGivesRollPitchHeightEvenBesideALargerWall) {
   EXPECT_NEAR(pose.inlier_share, 3000.0 / 8000.0, 0.02);
 }
 
+// Walls standing on the floor put their feet (0 to 3 cm up) inside RANSAC's 3 cm band, at
+// the far end of the view where they tilt the plane. The narrowed refit must leave them out.
+TEST(FloorPlane, WallFeetInTheInlierBandDoNotTiltTheFloor) {
+  const Eigen::Isometry3d T_base_kinect =
+      robotio::MountPose({0.2, 0.0, 0.55}, Eigen::Vector3d(0.0, 15.0, 0.0) * kDeg);
+  const Eigen::Isometry3d T_kinect_base = T_base_kinect.inverse();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> along(0.6, 3.0);
+  std::uniform_real_distribution<double> across(-1.5, 1.5);
+  std::uniform_real_distribution<double> height(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, 0.002);
+  robotio::PointList points;
+  for (int i = 0; i < 4000; ++i) {
+    const Eigen::Vector3d p(along(rng), across(rng), noise(rng));
+    points.push_back((T_kinect_base * p).cast<float>());
+  }
+  for (int i = 0; i < 3000; ++i) {  // Wall at x = 3 m, from the floor up to 1 m.
+    const Eigen::Vector3d p(3.0 + noise(rng), across(rng), height(rng));
+    points.push_back((T_kinect_base * p).cast<float>());
+  }
+  const PlaneFit fit = FitPlane(points, PlaneFitConfig{}, FloorNormalInKinect(T_base_kinect));
+  ASSERT_TRUE(fit.ok);
+  const FloorPose pose = FloorPoseFromPlane(fit);
+  EXPECT_NEAR(pose.pitch_rad / kDeg, 15.0, 0.02);
+  EXPECT_NEAR(std::remainder(pose.roll_rad, 2 * M_PI) / kDeg, 0.0, 0.02);
+  EXPECT_NEAR(pose.height_m, 0.55, 0.0005);
+  EXPECT_LT(fit.rms_m, 0.003);
+
+  // The single wide band alone is what tilted it.
+  PlaneFitConfig wide;
+  wide.narrowing_rounds = 0;
+  const FloorPose tilted =
+      FloorPoseFromPlane(FitPlane(points, wide, FloorNormalInKinect(T_base_kinect)));
+  EXPECT_GT(std::abs(tilted.pitch_rad / kDeg - 15.0) + std::abs(tilted.height_m - 0.55) * 100.0,
+            0.05);
+}
+
 TEST(FloorPlane, CombinedFitsAverageAndCount) {
   PlaneFit a;
   a.ok = true;

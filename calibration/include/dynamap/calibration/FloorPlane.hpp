@@ -20,6 +20,11 @@ struct PlaneFitConfig {
   // a wall never passes for the floor.
   double max_normal_deviation_rad = 0.35;
   bool refine = true;  // Least-squares refit of the plane on the RANSAC inliers.
+  // With refine: refits on a band narrowed to narrowing_sigmas × the inliers' robust
+  // spread (at least min_band_m), so points just above the floor do not tilt it.
+  int narrowing_rounds = 3;
+  double narrowing_sigmas = 2.5;
+  double min_band_m = 0.004;  // m.
 };
 
 // A plane n·p + d = 0 in the frame of the points, n unit length and oriented so that d >= 0
