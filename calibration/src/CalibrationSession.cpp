@@ -196,6 +196,8 @@ void CalibrationSession::AddPair(int sensor, const Keyframe& from, const Keyfram
   pair.T_from_to = motion.T_from_to;
   pair.rms_m = motion.rms_m;
   pair.structure = motion.structure;
+  pair.information = motion.information;
+  pair.lever_m = motion.lever_m;
   capture_.kinects[sensor].motions.push_back(pair);
   ++t.pairs[sensor];
 }

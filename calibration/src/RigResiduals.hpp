@@ -7,6 +7,7 @@
 #include <ceres/rotation.h>
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 namespace dynamap::calibration::internal {
@@ -33,13 +34,25 @@ Eigen::Matrix<T, 3, 3> MountRotation(const T* pose) {
 
 // The ICP motion A of a Kinect between receive times r0 and r1 must equal X⁻¹·B·X, where X
 // is the mount and B the base motion between the capture times r − latency, built from the
-// track with the current wheel scales.
+// track with the current wheel scales. The error is the left perturbation δ = (ω, v) with
+// prediction = exp(δ)·A, in the `from` frame where the ICP information was computed; it
+// is weighted by that information (rotation times the lever, so both blocks are metres)
+// and divided by the translation sigma. With identity weight, lever 1 and sigma 1 the
+// residual is (ω in rad, v in m).
 class HandEyeResidual {
  public:
+  using Matrix6 = Eigen::Matrix<double, 6, 6>;
+
   HandEyeResidual(const TrackInterpolator* track, double rate_hz, double t0_s, double t1_s,
-                  const Eigen::Isometry3d& A, double rotation_sigma, double translation_sigma)
-      : track_(track), rate_hz_(rate_hz), t0_s_(t0_s), t1_s_(t1_s), A_(A),
-        inv_rot_sigma_(1.0 / rotation_sigma), inv_trans_sigma_(1.0 / translation_sigma) {}
+                  const Eigen::Isometry3d& A, const Matrix6& information, double lever_m,
+                  double translation_sigma)
+      : track_(track), rate_hz_(rate_hz), t0_s_(t0_s), t1_s_(t1_s), A_(A), lever_m_(lever_m),
+        inv_sigma_(1.0 / translation_sigma) {
+    // Square root W with WᵀW = information (negative round-off eigenvalues count as 0).
+    const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(information);
+    const Eigen::Matrix<double, 6, 1> root = eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+    weight_ = root.asDiagonal() * eigen.eigenvectors().transpose();
+  }
 
   template <typename T>
   bool operator()(const T* pose, const T* latency, const T* scales, T* residual) const {
@@ -64,16 +77,15 @@ class HandEyeResidual {
     const Eigen::Matrix<T, 3, 3> R_pred = R_x.transpose() * R_b * R_x;
     const Eigen::Matrix<T, 3, 1> t_pred = R_x.transpose() * (R_b * t_x + t_b - t_x);
 
-    const Eigen::Matrix<T, 3, 3> R_a = A_.linear().cast<T>();
-    const Eigen::Matrix<T, 3, 3> R_err = R_a.transpose() * R_pred;
+    const Eigen::Matrix<T, 3, 3> R_err = R_pred * A_.linear().cast<T>().transpose();
     T angle_axis[3];
     ceres::RotationMatrixToAngleAxis(ceres::ColumnMajorAdapter3x3(R_err.data()), angle_axis);
-    const Eigen::Matrix<T, 3, 1> t_err =
-        R_a.transpose() * (t_pred - A_.translation().cast<T>());
-    for (int i = 0; i < 3; ++i) {
-      residual[i] = angle_axis[i] * T(inv_rot_sigma_);
-      residual[3 + i] = t_err[i] * T(inv_trans_sigma_);
-    }
+    const Eigen::Matrix<T, 3, 1> v = t_pred - R_err * A_.translation().cast<T>();
+    Eigen::Matrix<T, 6, 1> delta;
+    delta << angle_axis[0] * T(lever_m_), angle_axis[1] * T(lever_m_),
+        angle_axis[2] * T(lever_m_), v[0], v[1], v[2];
+    const Eigen::Matrix<T, 6, 1> weighted = weight_.cast<T>() * delta;
+    for (int i = 0; i < 6; ++i) residual[i] = weighted[i] * T(inv_sigma_);
     return true;
   }
 
@@ -83,8 +95,9 @@ class HandEyeResidual {
   double t0_s_;
   double t1_s_;
   Eigen::Isometry3d A_;
-  double inv_rot_sigma_;
-  double inv_trans_sigma_;
+  Matrix6 weight_;
+  double lever_m_;
+  double inv_sigma_;
 };
 
 // Over one stretch of the capture, the heading change the scaled wheels imply must equal

@@ -52,7 +52,8 @@ std::vector<PairResidual> PairResiduals(const CaptureData& capture, const BaseTr
     for (const MotionPair& pair : capture.kinects[k].motions) {
       const internal::HandEyeResidual residual(
           &interpolator, track.rate_hz(), track.Seconds(pair.from_received_ns),
-          track.Seconds(pair.to_received_ns), pair.T_from_to, 1.0, 1.0);
+          track.Seconds(pair.to_received_ns), pair.T_from_to,
+          internal::HandEyeResidual::Matrix6::Identity(), 1.0, 1.0);
       double r[6];
       residual(states[k].pose, &states[k].latency, scales, r);
       out.push_back({static_cast<int>(k), pair.step, track.Seconds(pair.from_received_ns),
@@ -208,6 +209,33 @@ bool ComputeStdDevs(ceres::Problem* problem, std::vector<KinectState>* states, d
   return true;
 }
 
+// Removes the hand-eye blocks whose weighted misfit exceeds `factor` × the median misfit
+// (ICP that slid along a featureless direction or locked onto the wrong structure), so they
+// neither pull the solution nor widen the covariance. Returns how many were removed.
+int RemoveOutlierPairs(ceres::Problem* problem, const std::vector<ceres::ResidualBlockId>& blocks,
+                       double factor) {
+  if (blocks.size() < 3 || !(factor > 0.0)) return 0;
+  std::vector<double> misfit;
+  misfit.reserve(blocks.size());
+  for (const ceres::ResidualBlockId id : blocks) {
+    double cost = 0.0;
+    double residual[6];
+    problem->EvaluateResidualBlock(id, false, &cost, residual, nullptr);
+    misfit.push_back(Eigen::Map<const Eigen::Matrix<double, 6, 1>>(residual).norm());
+  }
+  std::vector<double> sorted = misfit;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double limit = factor * sorted[sorted.size() / 2];
+  int removed = 0;
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    if (misfit[i] > limit) {
+      problem->RemoveResidualBlock(blocks[i]);
+      ++removed;
+    }
+  }
+  return removed;
+}
+
 // Calibrated when free, determined (covariance) and within its std-dev limit.
 void Judge(ParameterEstimate* p, bool fixed, const std::string& rule_reason, bool have_std,
            double limit) {
@@ -335,6 +363,7 @@ SolverResult SolveRig(const CaptureData& capture, const SolverConfig& config) {
 
   ceres::Problem problem;
   int residual_count = 0;
+  std::vector<ceres::ResidualBlockId> hand_eye_blocks;
   for (std::size_t k = 0; k < states.size(); ++k) {
     KinectState& s = states[k];
     const KinectCapture& kinect = capture.kinects[k];
@@ -357,14 +386,14 @@ SolverResult SolveRig(const CaptureData& capture, const SolverConfig& config) {
     }
     if (!track.empty()) {
       for (const MotionPair& pair : kinect.motions) {
-        problem.AddResidualBlock(
+        hand_eye_blocks.push_back(problem.AddResidualBlock(
             new ceres::AutoDiffCostFunction<internal::HandEyeResidual, 6, 6, 1, 2>(
                 new internal::HandEyeResidual(&interpolator, track.rate_hz(),
                                               track.Seconds(pair.from_received_ns),
                                               track.Seconds(pair.to_received_ns), pair.T_from_to,
-                                              config.rotation_sigma_rad,
+                                              pair.information, pair.lever_m,
                                               config.translation_sigma_m)),
-            new ceres::HuberLoss(config.huber_width), s.pose, &s.latency, scales);
+            new ceres::HuberLoss(config.huber_width), s.pose, &s.latency, scales));
         residual_count += 6;
       }
     }
@@ -408,6 +437,15 @@ SolverResult SolveRig(const CaptureData& capture, const SolverConfig& config) {
   options.parameter_tolerance = 1e-10;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
+  result.outlier_pairs = RemoveOutlierPairs(&problem, hand_eye_blocks, config.outlier_factor);
+  if (result.outlier_pairs > 0) {
+    residual_count -= 6 * result.outlier_pairs;
+    ceres::Solve(options, &problem, &summary);
+    result.warnings.push_back(
+        std::to_string(result.outlier_pairs) +
+        Format(" ICP pair(s) left out: misfit above %.0f× the median of %.0f pairs",
+               config.outlier_factor, static_cast<double>(hand_eye_blocks.size())));
+  }
   result.converged = summary.IsSolutionUsable();
   result.message = summary.BriefReport();
 
@@ -418,9 +456,11 @@ SolverResult SolveRig(const CaptureData& capture, const SolverConfig& config) {
   free_parameters += scales_fixed ? 0 : 2;
   const int dof = std::max(1, residual_count - free_parameters);
   result.residual_sigma_scale = std::sqrt(2.0 * summary.final_cost / dof);
+  // Misfits above the priors widen the standard deviations; misfits below them do not
+  // narrow them, since pairs sharing frames and wheel slip are not independent errors.
   const bool have_std = result.converged &&
                         ComputeStdDevs(&problem, &states, scales, scales_fixed,
-                                       result.residual_sigma_scale, &result);
+                                       std::max(1.0, result.residual_sigma_scale), &result);
 
   const double limits[kKinectParameterCount] = {
       config.max_angle_std_rad,     config.max_angle_std_rad,     config.max_angle_std_rad,

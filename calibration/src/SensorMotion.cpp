@@ -1,5 +1,6 @@
 #include "dynamap/calibration/SensorMotion.hpp"
 
+#include <pcl/console/print.h>
 #include <pcl/features/normal_3d.h>
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/kdtree/kdtree_flann.h>
@@ -67,6 +68,9 @@ SensorMotionResult EstimateSensorMotion(const PreparedCloud& from, const Prepare
       static_cast<int>(to.points.size()) < config.min_correspondences) {
     return result;
   }
+  // A pair without enough correspondences is told by the result; PCL would also print an
+  // error line for it through the progress line.
+  pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
   const NormalCloud::Ptr target = ToPcl(from);
   const NormalCloud::Ptr source = ToPcl(to);
   pcl::IterativeClosestPointWithNormals<pcl::PointNormal, pcl::PointNormal> icp;
@@ -79,6 +83,15 @@ SensorMotionResult EstimateSensorMotion(const PreparedCloud& from, const Prepare
   NormalCloud aligned;
   icp.align(aligned, guess.matrix().cast<float>());
   if (!icp.hasConverged()) return result;
+  if (config.fine_correspondence_m > 0.0) {
+    // Near the solution, pairings as far as the wide first stage allows mostly join points
+    // to the wrong surface (where one frame sees what the other does not) and pull the
+    // motion towards them; a narrow second stage leaves them out.
+    const Eigen::Matrix4f coarse = icp.getFinalTransformation();
+    icp.setMaxCorrespondenceDistance(config.fine_correspondence_m);
+    icp.align(aligned, coarse);
+    if (!icp.hasConverged()) return result;
+  }
   result.T_from_to.matrix() = icp.getFinalTransformation().cast<double>();
 
   // Point-to-plane information of the final pairing: its weakest direction is the motion
@@ -90,7 +103,9 @@ SensorMotionResult EstimateSensorMotion(const PreparedCloud& from, const Prepare
   double lever_sq = 0.0;
   std::vector<int> index(1);
   std::vector<float> dist_sq(1);
-  const double max_sq = config.max_correspondence_m * config.max_correspondence_m;
+  const double pairing_m =
+      config.fine_correspondence_m > 0.0 ? config.fine_correspondence_m : config.max_correspondence_m;
+  const double max_sq = pairing_m * pairing_m;
   for (const pcl::PointNormal& p : aligned) {
     if (tree.nearestKSearch(p, 1, index, dist_sq) != 1 || dist_sq[0] > max_sq) continue;
     const pcl::PointNormal& q = (*target)[index[0]];
@@ -113,6 +128,8 @@ SensorMotionResult EstimateSensorMotion(const PreparedCloud& from, const Prepare
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(Hs);
   const double largest = eigen.eigenvalues()(5);
   result.structure = largest > 0.0 ? eigen.eigenvalues()(0) / largest : 0.0;
+  if (largest > 0.0) result.information = Hs / largest;
+  result.lever_m = lever;
   result.rms_m = std::sqrt(sum_sq / result.correspondences);
   result.accepted = result.rms_m <= config.max_rms_m && result.structure >= config.min_structure;
   return result;

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "SyntheticCapture.hpp"
 
@@ -95,6 +97,65 @@ TEST(RigSolver, WithoutDrivingYawIsNotCalibrated) {
     EXPECT_FALSE(k.parameters[kX].Calibrated().has_value());
   }
   EXPECT_FALSE(result.scale_left.Calibrated().has_value());
+}
+
+// ICP that locked onto the wrong structure: one pair 0.5 m off. The first solve finds it
+// far outside the others' misfit; it is left out and the rig is recovered as without it.
+TEST(RigSolver, AGrossIcpFailureIsLeftOut) {
+  const robotio::Rig truth = test::TrueRig();
+  const robotio::Rig guess = test::PerturbedRig(truth, 10.0 * kDeg, 0.10, 0.0, 4);
+  test::SyntheticOptions options;
+  options.segments = test::GuidedSegments();
+  options.seed = 4;
+  CaptureData capture = test::Synthesize(truth, guess, options);
+  std::vector<MotionPair>& motions = capture.kinects[0].motions;
+  ASSERT_GT(motions.size(), 20u);
+  motions[motions.size() / 3].T_from_to.translation() += Eigen::Vector3d(0.5, 0.0, 0.2);
+  const SolverResult result = SolveRig(capture, SolverConfig{});
+  EXPECT_GE(result.outlier_pairs, 1);
+  EXPECT_LT(result.outlier_pairs, 5);
+  ExpectRecovered(result, truth, options);
+}
+
+// In a corridor ICP cannot tell how far the sensor slid along it: such pairs carry large
+// errors in that one direction, and their information says so. The solver must give that
+// direction no weight; with uniform weights the same errors pull x/y off.
+TEST(RigSolver, ErrorsAlongADirectionTheSceneCannotPinAreIgnored) {
+  const robotio::Rig truth = test::TrueRig();
+  const robotio::Rig guess = test::PerturbedRig(truth, 10.0 * kDeg, 0.10, 0.0, 6);
+  test::SyntheticOptions options;
+  options.segments = test::GuidedSegments();
+  options.seed = 6;
+  CaptureData weighted = test::Synthesize(truth, guess, options);
+  CaptureData uniform = weighted;
+  for (std::size_t k = 0; k < weighted.kinects.size(); ++k) {
+    for (std::size_t i = 0; i < weighted.kinects[k].motions.size(); i += 2) {
+      // Slid 4 cm along optical x (sideways), a direction this pair's scene does not pin.
+      for (CaptureData* capture : {&weighted, &uniform}) {
+        capture->kinects[k].motions[i].T_from_to.translation().x() += 0.04;
+      }
+      Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Identity();
+      information(3, 3) = 1e-4;
+      weighted.kinects[k].motions[i].information = information;
+    }
+  }
+  const SolverResult good = SolveRig(weighted, SolverConfig{});
+  ASSERT_TRUE(good.converged);
+  const SolverResult biased = SolveRig(uniform, SolverConfig{});
+  ASSERT_TRUE(biased.converged);
+  double good_error = 0.0, biased_error = 0.0;
+  for (std::size_t k = 0; k < truth.kinects.size(); ++k) {
+    const Eigen::Vector3d t = truth.kinects[k].T_base_kinect.translation();
+    for (int i : {kX, kY}) {
+      good_error = std::max(good_error, std::abs(good.kinects[k].parameters[i].estimate - t[i - kX]));
+      biased_error =
+          std::max(biased_error, std::abs(biased.kinects[k].parameters[i].estimate - t[i - kX]));
+    }
+  }
+  std::printf("max x/y error: information-weighted %.4f m, uniform %.4f m\n", good_error,
+              biased_error);
+  EXPECT_LT(good_error, 0.004);
+  EXPECT_LT(good_error, 0.5 * biased_error);
 }
 
 TEST(RigSolver, ToRigCarriesEstimates) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <random>
 
@@ -63,6 +65,16 @@ TEST(SensorMotion, BareFloorLacksStructureAndIsRejected) {
                            Eigen::Isometry3d::Identity(), config);
   EXPECT_FALSE(r.accepted);
   EXPECT_LT(r.structure, config.min_structure);
+  // Its information says which directions the floor cannot pin: sliding along it (optical
+  // x and z) and turning about its normal (optical y); moving off it is pinned.
+  using Matrix6 = Eigen::Matrix<double, 6, 6>;
+  const double largest = Eigen::SelfAdjointEigenSolver<Matrix6>(r.information).eigenvalues()(5);
+  EXPECT_NEAR(largest, 1.0, 1e-9);
+  EXPECT_LT(r.information(3, 3), 1e-3);
+  EXPECT_LT(r.information(5, 5), 1e-3);
+  EXPECT_LT(r.information(1, 1), 1e-3);
+  EXPECT_GT(r.information(4, 4), 0.3);
+  EXPECT_GT(r.lever_m, 0.8);
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ struct SyntheticOptions {
   std::vector<Segment> segments;     // Driven in order, each ramped up and down.
   double keyframe_interval_s = 0.5;  // s between the two frames of a pair.
   double rotation_noise_rad = 0.0005;
-  double translation_noise_m = 0.002;
+  double translation_noise_m = 0.0015;  // As SolverConfig::translation_sigma_m.
   double floor_normal_noise_rad = 0.0005;
   double floor_distance_noise_m = 0.001;
   double scale_left = 1.004;         // True wheel distance = scale × reported.

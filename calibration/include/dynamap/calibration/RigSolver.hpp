@@ -15,13 +15,17 @@
 namespace dynamap::calibration {
 
 struct SolverConfig {
-  double rotation_sigma_rad = 0.002;     // rad, prior noise of one ICP pair's rotation.
-  double translation_sigma_m = 0.005;    // m, prior noise of one ICP pair's translation.
+  // m, prior noise of one ICP pair's motion in its best-determined direction (rotations
+  // count as the motion of points at the pair's lever, MotionPair::information).
+  double translation_sigma_m = 0.0015;
   double floor_normal_sigma_rad = 0.002; // rad, noise of the combined floor normal.
   double floor_distance_sigma_m = 0.003; // m, noise of the combined floor distance.
   double wheel_heading_sigma_rad = 0.005;  // rad, wheel vs gyro heading over one stretch.
   double wheel_heading_stretch_s = 1.0;    // s, length of those stretches.
   double huber_width = 3.0;              // Whitened residual where the robust loss bends.
+  // After a first solve, ICP pairs whose misfit exceeds this many times the median are
+  // left out and the problem is solved again (0: keep every pair).
+  double outlier_factor = 4.0;
   int max_iterations = 200;              // Levenberg-Marquardt iterations at most.
   double max_latency_s = 0.5;            // s, time offsets are searched in [-max, max].
   // Observability rules from the captured motion (per Kinect, over its accepted pairs).
@@ -83,7 +87,9 @@ struct SolverResult {
   std::vector<KinectEstimate> kinects;    // Rig order.
   ParameterEstimate scale_left;           // True wheel distance = scale × reported.
   ParameterEstimate scale_right;
-  double residual_sigma_scale = 1.0;      // sqrt(reduced chi-square) applied to std devs.
+  double residual_sigma_scale = 1.0;      // sqrt(reduced chi-square); std devs are scaled
+                                          // by it when it exceeds 1.
+  int outlier_pairs = 0;                  // ICP pairs left out (SolverConfig::outlier_factor).
   std::vector<PairResidual> initial_residuals;  // With the closed-form start.
   std::vector<PairResidual> final_residuals;    // After refinement.
   // Cross-check of the two Kinects: base motion implied by each over the same interval.

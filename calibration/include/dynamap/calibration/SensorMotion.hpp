@@ -13,6 +13,7 @@ struct IcpConfig {
   double voxel_m = 0.05;                // m, voxel-grid downsampling of each cloud.
   double normal_radius_m = 0.15;        // m, neighbourhood for surface normals.
   double max_correspondence_m = 0.2;    // m, farthest point pairing ICP accepts.
+  double fine_correspondence_m = 0.05;  // m, the same in a second stage (0: no second stage).
   int max_iterations = 50;              // ICP iterations at most.
   double max_rms_m = 0.03;              // m, point-to-plane RMS above which a pair is rejected.
   double min_structure = 0.01;          // Smallest/largest information eigenvalue ratio.
@@ -33,6 +34,8 @@ struct SensorMotionResult {
   Eigen::Isometry3d T_from_to = Eigen::Isometry3d::Identity();
   double rms_m = 0.0;      // m, point-to-plane RMS at the solution.
   double structure = 0.0;  // 0..1, see IcpConfig::min_structure.
+  Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Identity();
+  double lever_m = 1.0;    // See MotionPair::information.
   int correspondences = 0;
 };
 
