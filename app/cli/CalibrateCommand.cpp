@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -47,6 +48,8 @@ struct GroundTruth {
   robotio::Rig rig;
   double scale_left = 1.0;
   double scale_right = 1.0;
+  // True optical-frame pose of every delivered frame, by (Kinect, receive stamp).
+  std::map<std::pair<int, std::int64_t>, Eigen::Isometry3d> sensor_poses;
 };
 
 robotio::Rig PerturbedTruth(const robotio::Rig& guess, const CalibrateOptions& options) {
@@ -75,7 +78,7 @@ struct Phase {
   double max_s = 40.0;
 };
 
-void Feed(cal::CalibrationSession* session, const sim::SimOutput& out) {
+void Feed(cal::CalibrationSession* session, const sim::SimOutput& out, GroundTruth* truth) {
   std::size_t i = 0, j = 0;
   while (i < out.odometry.size() || j < out.imu.size()) {
     if (j >= out.imu.size() ||
@@ -85,7 +88,11 @@ void Feed(cal::CalibrationSession* session, const sim::SimOutput& out) {
       session->AddImu(out.imu[j++]);
     }
   }
-  for (const sim::SimFrame& frame : out.frames) session->AddDepth(frame.depth);
+  for (const sim::SimFrame& frame : out.frames) {
+    session->AddDepth(frame.depth);
+    truth->sensor_poses[{frame.depth.sensor_id, frame.depth.received_ns}] =
+        frame.T_map_kinect.pose;
+  }
 }
 
 void DriveInSimulator(cal::CalibrationSession* session, const CalibrateOptions& options,
@@ -132,7 +139,7 @@ void DriveInSimulator(cal::CalibrationSession* session, const CalibrateOptions& 
     for (const Phase& phase : script[s].second) {
       simulator.SetCommand({simulator.now_ns(), phase.v, phase.omega});
       for (double t = 0.0; t < phase.max_s; t += kStepS) {
-        Feed(session, simulator.Advance(kStepS));
+        Feed(session, simulator.Advance(kStepS), truth);
         const cal::SessionProgress p = session->Progress();
         progress.Update((s + p.fraction) / script.size(),
                         std::string(cal::SessionStepName(p.step)) + ": " + p.detail);
@@ -203,6 +210,36 @@ nlohmann::json ParameterJson(const cal::ParameterEstimate& p, std::optional<doub
   return j;
 }
 
+// How far each Kinect's ICP motions are from the simulator's true sensor motions: RMS and
+// mean (a bias the solver cannot average away) of the rotation and translation errors.
+nlohmann::json SensorMotionErrors(const cal::KinectCapture& kinect, int sensor,
+                                  const GroundTruth& truth) {
+  Eigen::Vector3d rot_sum = Eigen::Vector3d::Zero(), trans_sum = Eigen::Vector3d::Zero();
+  double rot_sq = 0.0, trans_sq = 0.0;
+  int n = 0;
+  for (const cal::MotionPair& pair : kinect.motions) {
+    const auto from = truth.sensor_poses.find({sensor, pair.from_received_ns});
+    const auto to = truth.sensor_poses.find({sensor, pair.to_received_ns});
+    if (from == truth.sensor_poses.end() || to == truth.sensor_poses.end()) continue;
+    const Eigen::Isometry3d true_motion = from->second.inverse() * to->second;
+    const Eigen::Isometry3d error = true_motion.inverse() * pair.T_from_to;
+    const Eigen::AngleAxisd angle_axis(error.linear());
+    const Eigen::Vector3d rotation = angle_axis.axis() * angle_axis.angle() / kDeg;
+    rot_sum += rotation;
+    trans_sum += error.translation();
+    rot_sq += rotation.squaredNorm();
+    trans_sq += error.translation().squaredNorm();
+    ++n;
+  }
+  if (n == 0) return {{"pairs", 0}};
+  auto vec = [](const Eigen::Vector3d& v) { return std::vector<double>{v.x(), v.y(), v.z()}; };
+  return {{"pairs", n},
+          {"rotation_rms_deg", std::sqrt(rot_sq / n)},
+          {"rotation_mean_deg", vec(rot_sum / n)},
+          {"translation_rms_m", std::sqrt(trans_sq / n)},
+          {"translation_mean_m", vec(trans_sum / n)}};
+}
+
 void Run(const CalibrateOptions& options) {
   if (options.log.empty() == options.world.empty()) {
     FailCommand(kCommand, "give exactly one of --log DIR and --world FILE");
@@ -259,6 +296,10 @@ void Run(const CalibrateOptions& options) {
                        {"motion", {{"pairs", e.coverage.pairs},
                                    {"turned_deg", e.coverage.turned_deg},
                                    {"translated_m", e.coverage.translated_m}}}});
+    if (truth) {
+      kinects.back()["motion"]["error_vs_truth"] =
+          SensorMotionErrors(session.capture().kinects[k], static_cast<int>(k), *truth);
+    }
   }
   parameters.push_back(ParameterJson(result.scale_left, truth ? std::optional(truth->scale_left) : std::nullopt));
   parameters.push_back(ParameterJson(result.scale_right, truth ? std::optional(truth->scale_right) : std::nullopt));
@@ -276,6 +317,7 @@ void Run(const CalibrateOptions& options) {
       {"solver", {{"converged", result.converged},
                   {"summary", result.message},
                   {"residual_sigma_scale", result.residual_sigma_scale},
+                  {"outlier_pairs", result.outlier_pairs},
                   {"gyro_bias_rad_s", session.gyro_bias_rad_s()}}},
       {"cross_check", {{"pairs", result.cross_check_pairs},
                        {"rotation_rms_deg", result.cross_check_rotation_rms_deg},
@@ -284,7 +326,15 @@ void Run(const CalibrateOptions& options) {
       {"kinects", kinects},
       {"warnings", result.warnings},
       {"plots", *plots}};
-  if (truth) report["seed"] = options.seed;
+  if (truth) {
+    // The simulated truth, for comparing maps built with it, the estimate and the guess
+    // (dynamap map --rig).
+    const std::string truth_file = (out_dir / "rig_truth.yaml").string();
+    const robotio::Status saved = robotio::SaveRig(truth->rig, truth_file);
+    if (!saved) FailCommand(kCommand, saved.error().message);
+    report["seed"] = options.seed;
+    report["rig_truth"] = truth_file;
+  }
   WriteJsonReport(kCommand, report, (out_dir / "report.json").string());
   if (!write_rig) {
     std::string why;

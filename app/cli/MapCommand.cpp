@@ -42,6 +42,7 @@ struct MapOptions {
   double max_range_m = 4.0;
   int eval_stride = 2;
   std::string robot = "robots/segway_rmp50.yaml";
+  std::string rig;  // Kinect poses and latencies to map with instead of the recorded ones.
 };
 
 using Clock = std::chrono::steady_clock;
@@ -137,6 +138,11 @@ void RunMap(const MapOptions& o) {
   const auto start = Clock::now();
   auto opened = robotio::RecordingReader::Open(o.log);
   if (!opened) FailCommand(kCommand, opened.error().message);
+  if (!o.rig.empty()) {
+    auto rig = robotio::LoadRig(o.rig);
+    if (!rig) FailCommand(kCommand, rig.error().message);
+    Check(opened->UseExtrinsics(*rig, o.rig));
+  }
   const robotio::RecordingReader& reader = *opened;
   mapping::MappingConfig config;
   config.resolution_m = o.resolution_m;
@@ -210,6 +216,7 @@ void RunMap(const MapOptions& o) {
       {"command", "map"},
       {"log", reader.dir()},
       {"poses", o.poses},
+      {"rig", o.rig.empty() ? "recorded" : o.rig},
       {"update", o.update},
       {"resolution_m", config.resolution_m},
       {"max_range_m", config.max_range_m},
@@ -319,6 +326,10 @@ void RegisterMapCommand(CLI::App& app) {
       ->capture_default_str();
   map->add_option("--robot", options->robot, "Robot file for the track width (--poses odometry)")
       ->capture_default_str();
+  map->add_option("--rig", options->rig,
+                  "Rig file whose Kinect poses and latencies replace the recorded ones (e.g. a "
+                  "new calibration); intrinsics stay the recording's")
+      ->check(CLI::ExistingFile);
   map->callback([options] { RunMap(*options); });
 }
 

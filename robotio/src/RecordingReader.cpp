@@ -216,6 +216,22 @@ Expected<RecordingReader> RecordingReader::Open(const std::string& dir) {
   return reader;
 }
 
+Status RecordingReader::UseExtrinsics(const Rig& rig, const std::string& source) {
+  Rig updated = rig_;
+  for (KinectMount& mount : updated.kinects) {
+    const auto match = std::find_if(rig.kinects.begin(), rig.kinects.end(),
+                                    [&](const KinectMount& m) { return m.id == mount.id; });
+    if (match == rig.kinects.end()) {
+      return Error{source + ": kinects: no Kinect with id '" + mount.id + "', which " + dir_ +
+                   " recorded"};
+    }
+    mount.T_base_kinect = match->T_base_kinect;
+    mount.latency_s = match->latency_s;
+  }
+  rig_ = std::move(updated);
+  return Ok{};
+}
+
 Expected<DepthFrame> RecordingReader::LoadDepth(const DepthEntry& entry) const {
   auto image = ReadDepthImage(entry.file);
   if (!image) return image.error();

@@ -94,6 +94,43 @@ TEST(Recording, WriteThenReadGivesBitExactDataBack) {
   EXPECT_NEAR(reader->ground_truth()[3].pose.translation().x(), 0.3, 1e-9);
 }
 
+// Re-mapping an old recording with a new calibration: poses and latencies come from the
+// new rig (matched by id), intrinsics stay the recorded ones.
+TEST(Recording, ExtrinsicsFromAnotherRigReplaceTheRecordedOnes) {
+  const std::string dir = test::ScratchDir() + "/rec";
+  std::mt19937 rng(3);
+  const DepthFrame written = RandomFrame(1, 2'000'000'000LL, rng);
+  {
+    auto writer = RecordingWriter::Create(dir, SmallRig(), {});
+    ASSERT_TRUE(writer.ok()) << writer.error().message;
+    ASSERT_TRUE((*writer)->AddDepth(written).ok());
+  }
+  auto reader = RecordingReader::Open(dir);
+  ASSERT_TRUE(reader.ok()) << reader.error().message;
+
+  Rig calibrated = SmallRig();
+  std::swap(calibrated.kinects[0], calibrated.kinects[1]);  // Matched by id, not order.
+  calibrated.kinects[0].T_base_kinect = MountPose({0.1, 0.02, 0.5}, {M_PI, 0.2, -0.4});
+  calibrated.kinects[0].latency_s = 0.08;
+  calibrated.kinects[0].intrinsics = Intrinsics{};  // 640 x 480: must not be taken.
+  ASSERT_TRUE(reader->UseExtrinsics(calibrated, "new_rig.yaml").ok());
+  const KinectMount& mount = reader->rig().kinects[1];
+  EXPECT_EQ(mount.id, "kinect1");
+  EXPECT_TRUE(mount.T_base_kinect.isApprox(calibrated.kinects[0].T_base_kinect));
+  EXPECT_DOUBLE_EQ(mount.latency_s, 0.08);
+  EXPECT_EQ(mount.intrinsics.width, 64);
+  auto frame = reader->LoadDepth(reader->depth_entries()[0]);
+  ASSERT_TRUE(frame.ok()) << frame.error().message;
+  EXPECT_EQ(frame->stamp_ns, written.received_ns - 80'000'000LL);
+
+  Rig other = SmallRig();
+  other.kinects[1].id = "kinect7";
+  const Status missing = reader->UseExtrinsics(other, "other_rig.yaml");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.error().message.find("other_rig.yaml"), std::string::npos);
+  EXPECT_NE(missing.error().message.find("'kinect1'"), std::string::npos);
+}
+
 TEST(Recording, CreatingOverAnExistingRecordingIsRefused) {
   const std::string dir = test::ScratchDir() + "/rec";
   ASSERT_TRUE(RecordingWriter::Create(dir, SmallRig(), {}).ok());

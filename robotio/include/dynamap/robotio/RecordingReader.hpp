@@ -42,6 +42,11 @@ class RecordingReader {
   [[nodiscard]] const Trajectory& ground_truth() const { return ground_truth_; }
   [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
 
+  // Takes each Kinect's pose and latency from `rig` (e.g. a newer calibration) instead of
+  // the recorded ones; intrinsics, rates and ranges stay the recording's. The rig must have
+  // the recording's Kinects, matched by id; `source` names it in errors.
+  [[nodiscard]] Status UseExtrinsics(const Rig& rig, const std::string& source);
+
   // Loads one frame (millimetres, capture stamp = receive stamp - rig latency).
   [[nodiscard]] Expected<DepthFrame> LoadDepth(const DepthEntry& entry) const;
   // The label image recorded for the same sensor and receive stamp, if any.
