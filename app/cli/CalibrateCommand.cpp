@@ -41,6 +41,7 @@ struct CalibrateOptions {
   double max_angle_deg = 10.0;      // Perturbation of the simulated truth from the guess.
   double max_offset_m = 0.10;
   bool allow_uncalibrated = false;
+  int max_redos = 2;                // Simulated: capture steps redone for weak parameters.
 };
 
 // What the simulator really has, for the report's error column.
@@ -95,65 +96,107 @@ void Feed(cal::CalibrationSession* session, const sim::SimOutput& out, GroundTru
   }
 }
 
-void DriveInSimulator(cal::CalibrationSession* session, const CalibrateOptions& options,
-                      GroundTruth* truth) {
-  auto world = sim::LoadWorld(options.world);
-  if (!world) FailCommand(kCommand, world.error().message);
-  auto robot = sim::LoadRobotConfig(options.robot.empty()
-                                        ? ResourcePath("robots/segway_rmp50.yaml")
-                                        : options.robot);
-  if (!robot) FailCommand(kCommand, robot.error().message);
-  truth->rig = PerturbedTruth(session->guess(), options);
-  truth->scale_left = 1.0 / (1.0 + robot->encoder_scale_error_left);
-  truth->scale_right = 1.0 / (1.0 + robot->encoder_scale_error_right);
-  sim::SimulatorConfig config;
-  config.seed = options.seed;
-  sim::Simulator simulator(*world, *robot, truth->rig, config);
+// The guided sequence driven in the simulator, step by step, as an operator would with
+// the gamepad: each capture step's phases are held until the session counts them done.
+class SimulatedDrive {
+ public:
+  SimulatedDrive(cal::CalibrationSession* session, const CalibrateOptions& options,
+                 GroundTruth* truth)
+      : session_(session), truth_(truth) {
+    auto world = sim::LoadWorld(options.world);
+    if (!world) FailCommand(kCommand, world.error().message);
+    auto robot = sim::LoadRobotConfig(options.robot.empty()
+                                          ? ResourcePath("robots/segway_rmp50.yaml")
+                                          : options.robot);
+    if (!robot) FailCommand(kCommand, robot.error().message);
+    truth->rig = PerturbedTruth(session->guess(), options);
+    truth->scale_left = 1.0 / (1.0 + robot->encoder_scale_error_left);
+    truth->scale_right = 1.0 / (1.0 + robot->encoder_scale_error_right);
+    sim::SimulatorConfig config;
+    config.seed = options.seed;
+    simulator_ = std::make_unique<sim::Simulator>(*world, *robot, truth->rig, config);
+  }
 
-  const cal::SessionConfig sc;  // Run() uses the default targets.
-  auto stop = [](double seconds) {
-    return Phase{0.0, 0.0, [](const cal::SessionProgress&) { return false; }, seconds};
-  };
-  const std::vector<std::pair<cal::SessionStep, std::vector<Phase>>> script = {
-      {cal::SessionStep::kFloor,
-       {{0.0, 0.0, [](const cal::SessionProgress& p) { return p.complete; }, 15.0}}},
-      {cal::SessionStep::kTurn,
-       {{0.0, 0.5, [&](const cal::SessionProgress& p) { return p.turned_left_deg >= sc.turn_target_deg; }},
-        stop(1.0),
-        {0.0, -0.5, [&](const cal::SessionProgress& p) { return p.turned_right_deg >= sc.turn_target_deg; }},
-        stop(1.0)}},
-      {cal::SessionStep::kStraight,
-       {{0.3, 0.0, [&](const cal::SessionProgress& p) { return p.forward_m >= sc.straight_target_m; }},
-        stop(1.0),
-        {-0.3, 0.0, [&](const cal::SessionProgress& p) { return p.backward_m >= sc.straight_target_m; }},
-        stop(1.0)}},
-      {cal::SessionStep::kArcs,
-       {{0.3, 0.4, [&](const cal::SessionProgress& p) { return p.arc_left_m >= sc.arc_target_m; }},
-        stop(1.0),
-        {-0.3, -0.4, [&](const cal::SessionProgress& p) { return p.arc_right_m >= sc.arc_target_m; }},
-        stop(1.0)}}};
-
-  ProgressLine progress("calibrating");
-  constexpr double kStepS = 0.05;
-  for (std::size_t s = 0; s < script.size(); ++s) {
-    for (const Phase& phase : script[s].second) {
-      simulator.SetCommand({simulator.now_ns(), phase.v, phase.omega});
+  // Drives `step` until complete (or its phases time out); `label` heads the progress line.
+  void Drive(cal::SessionStep step, const std::string& label) {
+    const cal::SessionConfig targets;  // CalibrationSession runs with the default targets.
+    ProgressLine progress(label);
+    for (const Phase& phase : Phases(step, targets)) {
+      simulator_->SetCommand({simulator_->now_ns(), phase.v, phase.omega});
       for (double t = 0.0; t < phase.max_s; t += kStepS) {
-        Feed(session, simulator.Advance(kStepS), truth);
-        const cal::SessionProgress p = session->Progress();
-        progress.Update((s + p.fraction) / script.size(),
-                        std::string(cal::SessionStepName(p.step)) + ": " + p.detail);
+        Feed(session_, simulator_->Advance(kStepS), truth_);
+        const cal::SessionProgress p = session_->Progress();
+        progress.Update(p.fraction, std::string(cal::SessionStepName(p.step)) + ": " + p.detail);
         if (phase.done(p)) break;
       }
     }
+    simulator_->SetCommand({simulator_->now_ns(), 0.0, 0.0});
+    progress.Finish(std::string(cal::SessionStepName(step)) + ": " + session_->Progress().detail);
+  }
+
+  [[nodiscard]] int collisions() const { return simulator_->collision_count(); }
+
+ private:
+  static constexpr double kStepS = 0.05;
+
+  static std::vector<Phase> Phases(cal::SessionStep step, const cal::SessionConfig& targets) {
+    const Phase pause{0.0, 0.0, [](const cal::SessionProgress&) { return false; }, 1.0};
+    switch (step) {
+      case cal::SessionStep::kFloor:
+        return {{0.0, 0.0, [](const cal::SessionProgress& p) { return p.complete; }, 15.0}};
+      case cal::SessionStep::kTurn:
+        return {{0.0, 0.5, [=](const cal::SessionProgress& p) { return p.turned_left_deg >= targets.turn_target_deg; }},
+                pause,
+                {0.0, -0.5, [=](const cal::SessionProgress& p) { return p.turned_right_deg >= targets.turn_target_deg; }},
+                pause};
+      case cal::SessionStep::kStraight:
+        return {{0.3, 0.0, [=](const cal::SessionProgress& p) { return p.forward_m >= targets.straight_target_m; }},
+                pause,
+                {-0.3, 0.0, [=](const cal::SessionProgress& p) { return p.backward_m >= targets.straight_target_m; }},
+                pause};
+      case cal::SessionStep::kArcs:
+        return {{0.3, 0.4, [=](const cal::SessionProgress& p) { return p.arc_left_m >= targets.arc_target_m; }},
+                pause,
+                {-0.3, -0.4, [=](const cal::SessionProgress& p) { return p.arc_right_m >= targets.arc_target_m; }},
+                pause};
+      default:
+        return {};
+    }
+  }
+
+  cal::CalibrationSession* session_;
+  GroundTruth* truth_;
+  std::unique_ptr<sim::Simulator> simulator_;
+};
+
+// Drives floor → turn → straight → arcs and solves; while the review names a capture step
+// that would calibrate what is still weak, redoes it (at most `max_redos` times) and solves
+// again. Returns the steps redone, in order.
+std::vector<std::string> CalibrateInSimulator(cal::CalibrationSession* session,
+                                              const CalibrateOptions& options,
+                                              GroundTruth* truth) {
+  SimulatedDrive drive(session, options, truth);
+  for (const cal::SessionStep step : {cal::SessionStep::kFloor, cal::SessionStep::kTurn,
+                                      cal::SessionStep::kStraight, cal::SessionStep::kArcs}) {
+    drive.Drive(step, "calibrating");
     if (!session->Advance().ok()) {
-      std::fprintf(stderr, "\ndynamap calibrate: step '%s' left incomplete: %s\n",
+      std::fprintf(stderr, "dynamap calibrate: step '%s' left incomplete: %s\n",
                    cal::SessionStepName(session->step()), session->Progress().detail.c_str());
       session->Skip();
     }
   }
-  simulator.SetCommand({simulator.now_ns(), 0.0, 0.0});
-  progress.Finish("capture done, collisions: " + std::to_string(simulator.collision_count()));
+  session->Solve();
+  std::vector<std::string> redone;
+  for (int round = 0; round < options.max_redos; ++round) {
+    const std::optional<cal::SessionStep> redo = session->Progress().redo;
+    if (!redo) break;
+    session->Redo(*redo);
+    drive.Drive(*redo, "redoing");
+    redone.push_back(cal::SessionStepName(*redo));
+    session->Solve();
+  }
+  std::fprintf(stderr, "dynamap calibrate: capture done, collisions: %d\n", drive.collisions());
+  return redone;
 }
 
 void ReplayRecording(cal::CalibrationSession* session, const std::string& dir) {
@@ -262,13 +305,15 @@ void Run(const CalibrateOptions& options) {
     config.track_width_m = robot->track_width_m;
   }
   cal::CalibrationSession session(*guess, config);
+  std::vector<std::string> redone;
   if (!options.world.empty()) {
     truth.emplace();
-    DriveInSimulator(&session, options, &*truth);
+    redone = CalibrateInSimulator(&session, options, &*truth);
   } else {
     ReplayRecording(&session, options.log);
+    session.Solve();
   }
-  const cal::SolverResult& result = session.Solve();
+  const cal::SolverResult& result = *session.result();
 
   nlohmann::json parameters = nlohmann::json::array();
   nlohmann::json kinects = nlohmann::json::array();
@@ -333,6 +378,7 @@ void Run(const CalibrateOptions& options) {
     const robotio::Status saved = robotio::SaveRig(truth->rig, truth_file);
     if (!saved) FailCommand(kCommand, saved.error().message);
     report["seed"] = options.seed;
+    report["steps_redone"] = redone;
     report["rig_truth"] = truth_file;
   }
   WriteJsonReport(kCommand, report, (out_dir / "report.json").string());
@@ -371,6 +417,11 @@ void RegisterCalibrateCommand(CLI::App& app) {
   command->add_option("--robot", options->robot, "Robot file for --world (default: Segway RMP50)");
   command->add_option("--width", options->width, "Simulated depth width, px")
       ->check(CLI::Range(80, 640))
+      ->capture_default_str();
+  command->add_option("--max-redos", options->max_redos,
+                      "Simulated: capture steps redone while the review names one that would "
+                      "calibrate a weak parameter")
+      ->check(CLI::Range(0, 10))
       ->capture_default_str();
   command->add_flag("--allow-uncalibrated", options->allow_uncalibrated,
                     "Write the rig even when some parameters are not calibrated (they keep "

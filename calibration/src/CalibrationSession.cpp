@@ -152,6 +152,7 @@ void CalibrationSession::AddFloorFrame(const robotio::DepthFrame& frame) {
                FloorNormalInKinect(mount.T_base_kinect));
   if (fit.ok && fit.inlier_share >= config_.min_floor_inlier_share) {
     capture_.kinects[frame.sensor_id].floor.push_back(fit);
+    ++Tally(SessionStep::kFloor).pairs[frame.sensor_id];
   }
 }
 
@@ -208,7 +209,8 @@ SessionProgress CalibrationSession::Progress() const {
   const std::size_t n = guess_.kinects.size();
   int min_fits = n > 0 ? config_.floor_frames : 0;
   for (std::size_t k = 0; k < n; ++k) {
-    p.floor_fits.push_back(static_cast<int>(capture_.kinects[k].floor.size()));
+    // Fits of the current floor step (a redo counts afresh; earlier fits are kept).
+    p.floor_fits.push_back(Tally(SessionStep::kFloor).pairs[k]);
     min_fits = std::min(min_fits, p.floor_fits.back());
   }
   const StepTally& t = Tally(step_);
@@ -269,10 +271,16 @@ SessionProgress CalibrationSession::Progress() const {
           calibrated += e->status == Observability::kCalibrated ? 1 : 0;
         }
       }
-      p.instruction = calibrated == total
-                          ? "Review the estimates and residual plots, then save."
-                          : "Some parameters are not calibrated: redo the step the warnings "
-                            "name, or save anyway only if you accept the guess for them.";
+      p.redo = StepForUncalibrated();
+      p.instruction =
+          calibrated == total
+              ? "Review the estimates and residual plots, then save."
+              : p.redo ? std::string("Some parameters are not calibrated: redo the '") +
+                             SessionStepName(*p.redo) +
+                             "' step for more data, or save anyway only if you accept the "
+                             "guess for them."
+                       : "Some parameters are not calibrated: redo the step the warnings "
+                         "name, or save anyway only if you accept the guess for them.";
       p.fraction = total > 0 ? static_cast<double>(calibrated) / total : 0.0;
       p.detail = Printf("%d of %d parameters calibrated", calibrated, total);
       break;
@@ -329,6 +337,27 @@ void CalibrationSession::Redo(SessionStep capture_step) {
   if (!IsCapture(capture_step) || step_ == SessionStep::kDone) return;
   step_ = capture_step;
   for (auto& k : keyframes_) k.clear();  // No pair spans the pause.
+  StepTally& t = Tally(step_);
+  t = StepTally{};
+  t.pairs.assign(guess_.kinects.size(), 0);
+  t.rejected.assign(guess_.kinects.size(), 0);
+}
+
+std::optional<SessionStep> CalibrationSession::StepForUncalibrated() const {
+  if (!result_) return std::nullopt;
+  auto weak = [](const ParameterEstimate& p) { return p.status != Observability::kCalibrated; };
+  for (const KinectEstimate& k : result_->kinects) {
+    for (int i = 0; i < kKinectParameterCount; ++i) {
+      if (!weak(k.parameters[i])) continue;
+      switch (i) {
+        case kYaw: return SessionStep::kStraight;
+        case kX: case kY: case kLatency: return SessionStep::kTurn;
+        default: return SessionStep::kFloor;  // Roll, pitch, height.
+      }
+    }
+  }
+  if (weak(result_->scale_left) || weak(result_->scale_right)) return SessionStep::kStraight;
+  return std::nullopt;
 }
 
 robotio::Status CalibrationSession::Save(const std::string& file, bool allow_uncalibrated) {

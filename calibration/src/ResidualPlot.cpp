@@ -20,11 +20,15 @@ constexpr int kMarginTop = 40;
 
 const cv::Scalar kKinectColours[] = {{200, 90, 30}, {40, 140, 230}, {60, 170, 60}};
 const cv::Scalar kInitialColour(190, 190, 190);
+const cv::Scalar kLeftOutColour(30, 30, 220);
 
 struct Series {
   std::vector<double> x, y;
   cv::Scalar colour;
   std::string label;
+  // false: the series does not stretch the y axis; its points above the top are drawn on
+  // the top edge as rings (pairs the solver left out can be metres off).
+  bool scales_axis = true;
 };
 
 // One panel: axes, zero line, tick labels and the series as dots.
@@ -37,7 +41,7 @@ void DrawPanel(cv::Mat* image, int top, const std::string& y_label, const std::s
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       x_min = first ? s.x[i] : std::min(x_min, s.x[i]);
       x_max = first ? s.x[i] : std::max(x_max, s.x[i]);
-      y_max = std::max(y_max, std::abs(s.y[i]));
+      if (s.scales_axis) y_max = std::max(y_max, std::abs(s.y[i]));
       first = false;
     }
   }
@@ -70,7 +74,12 @@ void DrawPanel(cv::Mat* image, int top, const std::string& y_label, const std::s
   }
   for (const Series& s : series) {
     for (std::size_t i = 0; i < s.x.size(); ++i) {
-      cv::circle(*image, {px(s.x[i]), py(std::abs(s.y[i]))}, 2, s.colour, cv::FILLED, cv::LINE_AA);
+      const double y = std::abs(s.y[i]);
+      if (y > 1.1 * y_max) {
+        cv::circle(*image, {px(s.x[i]), top + 4}, 4, s.colour, 1, cv::LINE_AA);
+      } else {
+        cv::circle(*image, {px(s.x[i]), py(y)}, 2, s.colour, cv::FILLED, cv::LINE_AA);
+      }
     }
   }
 }
@@ -135,7 +144,7 @@ robotio::Expected<std::vector<std::string>> WriteResidualPlots(const SolverResul
     Series initial_rot{{}, {}, kInitialColour, "closed form"};
     Series initial_trans = initial_rot;
     for (const PairResidual& r : result.initial_residuals) {
-      if (r.step != step) continue;
+      if (r.step != step || r.left_out) continue;
       initial_rot.x.push_back(r.t_s);
       initial_rot.y.push_back(r.rotation_deg);
       initial_trans.x.push_back(r.t_s);
@@ -143,11 +152,20 @@ robotio::Expected<std::vector<std::string>> WriteResidualPlots(const SolverResul
     }
     rotation.push_back(initial_rot);
     translation.push_back(initial_trans);
+    Series left_out_rot{{}, {}, kLeftOutColour, "left out", false};
+    Series left_out_trans = left_out_rot;
+    for (const PairResidual& r : result.final_residuals) {
+      if (r.step != step || !r.left_out) continue;
+      left_out_rot.x.push_back(r.t_s);
+      left_out_rot.y.push_back(r.rotation_deg);
+      left_out_trans.x.push_back(r.t_s);
+      left_out_trans.y.push_back(1000.0 * r.translation_m);
+    }
     for (std::size_t k = 0; k < capture.kinects.size(); ++k) {
       Series rot{{}, {}, kKinectColours[k % 3], capture.kinects[k].guess.id + " refined"};
       Series trans = rot;
       for (const PairResidual& r : result.final_residuals) {
-        if (r.step != step || r.kinect != static_cast<int>(k)) continue;
+        if (r.step != step || r.kinect != static_cast<int>(k) || r.left_out) continue;
         rot.x.push_back(r.t_s);
         rot.y.push_back(r.rotation_deg);
         trans.x.push_back(r.t_s);
@@ -156,6 +174,8 @@ robotio::Expected<std::vector<std::string>> WriteResidualPlots(const SolverResul
       rotation.push_back(rot);
       translation.push_back(trans);
     }
+    rotation.push_back(left_out_rot);
+    translation.push_back(left_out_trans);
     const std::string file = (base / (std::string("residuals_") + name + ".png")).string();
     const robotio::Status status =
         WritePlot(file, std::string("Motion pairs while driving: ") + name +

@@ -211,10 +211,12 @@ bool ComputeStdDevs(ceres::Problem* problem, std::vector<KinectState>* states, d
 
 // Removes the hand-eye blocks whose weighted misfit exceeds `factor` × the median misfit
 // (ICP that slid along a featureless direction or locked onto the wrong structure), so they
-// neither pull the solution nor widen the covariance. Returns how many were removed.
-int RemoveOutlierPairs(ceres::Problem* problem, const std::vector<ceres::ResidualBlockId>& blocks,
-                       double factor) {
-  if (blocks.size() < 3 || !(factor > 0.0)) return 0;
+// neither pull the solution nor widen the covariance. Returns which were removed.
+std::vector<bool> RemoveOutlierPairs(ceres::Problem* problem,
+                                     const std::vector<ceres::ResidualBlockId>& blocks,
+                                     double factor) {
+  std::vector<bool> removed(blocks.size(), false);
+  if (blocks.size() < 3 || !(factor > 0.0)) return removed;
   std::vector<double> misfit;
   misfit.reserve(blocks.size());
   for (const ceres::ResidualBlockId id : blocks) {
@@ -226,11 +228,10 @@ int RemoveOutlierPairs(ceres::Problem* problem, const std::vector<ceres::Residua
   std::vector<double> sorted = misfit;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   const double limit = factor * sorted[sorted.size() / 2];
-  int removed = 0;
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     if (misfit[i] > limit) {
       problem->RemoveResidualBlock(blocks[i]);
-      ++removed;
+      removed[i] = true;
     }
   }
   return removed;
@@ -437,7 +438,9 @@ SolverResult SolveRig(const CaptureData& capture, const SolverConfig& config) {
   options.parameter_tolerance = 1e-10;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
-  result.outlier_pairs = RemoveOutlierPairs(&problem, hand_eye_blocks, config.outlier_factor);
+  const std::vector<bool> left_out =
+      RemoveOutlierPairs(&problem, hand_eye_blocks, config.outlier_factor);
+  result.outlier_pairs = static_cast<int>(std::count(left_out.begin(), left_out.end(), true));
   if (result.outlier_pairs > 0) {
     residual_count -= 6 * result.outlier_pairs;
     ceres::Solve(options, &problem, &summary);
@@ -485,6 +488,11 @@ SolverResult SolveRig(const CaptureData& capture, const SolverConfig& config) {
   }
   if (!track.empty()) {
     result.final_residuals = PairResiduals(capture, track, interpolator, states, scales);
+    // Same pair order as the hand-eye blocks.
+    for (std::size_t i = 0; i < left_out.size() && i < result.final_residuals.size(); ++i) {
+      result.final_residuals[i].left_out = left_out[i];
+      result.initial_residuals[i].left_out = left_out[i];
+    }
   }
   CrossCheck(capture, track, states, scales, &result);
   return result;

@@ -121,6 +121,45 @@ TEST(CalibrationSession, WalksTheStepsAndRefusesToSaveWhatIsNotCalibrated) {
   std::filesystem::remove(file);
 }
 
+// Review names the capture step that would calibrate what is still weak; redoing it counts
+// its targets from zero while the data already captured stays in the solve.
+TEST(CalibrationSession, ReviewNamesTheStepToRedoAndItsTargetsCountAfresh) {
+  const robotio::Rig rig = test::TrueRig();
+  SessionConfig config;
+  config.floor_frames = 3;
+  config.solver.floor_normal_sigma_rad = 0.0005;  // Exact floors: roll/pitch calibrated.
+  CalibrationSession session(rig, config);
+  std::int64_t t = 0;
+  double left = 0.0, right = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    Drive(&session, &t, 0.0, 0.0, 0.2, &left, &right);
+    for (int k = 0; k < 2; ++k) session.AddDepth(FloorFrame(rig.kinects[k], k, t));
+  }
+  ASSERT_TRUE(session.Advance().ok());
+  session.Skip();  // No turning,
+  Drive(&session, &t, 0.3, 0.0, 2.0, &left, &right);  // 0.6 m of straight driving,
+  session.Skip();
+  session.Skip();  // no arcs.
+  session.Solve();
+  SessionProgress p = session.Progress();
+  ASSERT_EQ(p.step, SessionStep::kReview);
+  // Roll and pitch come from the floor; kinect0's yaw is the first weak parameter.
+  ASSERT_TRUE(p.redo.has_value());
+  EXPECT_EQ(*p.redo, SessionStep::kStraight);
+  EXPECT_NE(p.instruction.find("'straight'"), std::string::npos) << p.instruction;
+
+  session.Redo(*p.redo);
+  p = session.Progress();
+  EXPECT_EQ(p.step, SessionStep::kStraight);
+  EXPECT_EQ(p.forward_m, 0.0);
+  Drive(&session, &t, 0.3, 0.0, 1.0, &left, &right);
+  EXPECT_NEAR(session.Progress().forward_m, 0.3, 0.02);
+
+  session.Redo(SessionStep::kFloor);
+  EXPECT_EQ(session.Progress().floor_fits, (std::vector<int>{0, 0}));
+  EXPECT_EQ(session.capture().kinects[0].floor.size(), 3u);  // Kept for the solve.
+}
+
 TEST(CalibrationSession, RedoReturnsToACaptureStepFromReview) {
   CalibrationSession session(test::TrueRig(), SessionConfig{});
   session.Skip();

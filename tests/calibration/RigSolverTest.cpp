@@ -114,6 +114,18 @@ TEST(RigSolver, AGrossIcpFailureIsLeftOut) {
   const SolverResult result = SolveRig(capture, SolverConfig{});
   EXPECT_GE(result.outlier_pairs, 1);
   EXPECT_LT(result.outlier_pairs, 5);
+  // The corrupted pair is among those left out (marked for the residual plots).
+  int marked = 0;
+  bool corrupted_marked = false;
+  for (std::size_t i = 0; i < result.final_residuals.size(); ++i) {
+    marked += result.final_residuals[i].left_out ? 1 : 0;
+    if (result.final_residuals[i].kinect == 0 &&
+        std::abs(result.final_residuals[i].translation_m - 0.54) < 0.05) {
+      corrupted_marked = result.final_residuals[i].left_out;
+    }
+  }
+  EXPECT_EQ(marked, result.outlier_pairs);
+  EXPECT_TRUE(corrupted_marked);
   ExpectRecovered(result, truth, options);
 }
 

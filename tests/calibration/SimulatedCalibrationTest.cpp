@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <random>
@@ -133,7 +134,10 @@ TEST(SimulatedCalibration, GuidedSessionRecoversAPerturbedRig) {
       }
     }
   }
-  EXPECT_GT(calibrated, 0);
+  std::printf("calibrated %d of %d Kinect parameters\n", calibrated,
+              static_cast<int>(truth.kinects.size()) * kKinectParameterCount);
+  // Even the reduced capture calibrates most of the rig (13 of 14 here when written).
+  EXPECT_GE(calibrated, 11);
   EXPECT_NEAR(result.scale_left.estimate * (1.0 + robot->encoder_scale_error_left), 1.0, 0.005);
   EXPECT_NEAR(result.scale_right.estimate * (1.0 + robot->encoder_scale_error_right), 1.0, 0.005);
   EXPECT_GT(result.cross_check_pairs, 10);

@@ -62,6 +62,10 @@ struct SessionProgress {
   double backward_m = 0.0;
   double arc_left_m = 0.0;        // Arc driving during the arcs step.
   double arc_right_m = 0.0;
+  // In review: the capture step whose data the first uncalibrated parameter needs
+  // (straight for yaw and wheel scales, turn for x/y and latency, floor for roll, pitch
+  // and height), if any.
+  std::optional<SessionStep> redo;
 };
 
 class CalibrationSession {
@@ -81,7 +85,8 @@ class CalibrationSession {
   void Skip();
   // From any capture step or kSolve: runs the solver and goes to kReview.
   const SolverResult& Solve();
-  // From kReview: back to a capture step to add more data (data so far is kept).
+  // From kReview: back to a capture step to add more data (data so far is kept; the
+  // step's targets count afresh).
   void Redo(SessionStep capture_step);
   // From kReview/kSave: writes the calibrated rig atomically and ends the session. Refused
   // while any parameter is not calibrated unless `allow_uncalibrated`.
@@ -100,13 +105,14 @@ class CalibrationSession {
   struct StepTally {
     double left_deg = 0, right_deg = 0, forward_m = 0, backward_m = 0, arc_left_m = 0,
            arc_right_m = 0;
-    std::vector<int> pairs, rejected;
+    std::vector<int> pairs, rejected;  // Per Kinect; in the floor step, accepted floor fits.
   };
   [[nodiscard]] robotio::Pose2D DeadReckonedAt(std::int64_t stamp_ns) const;
   void AddFloorFrame(const robotio::DepthFrame& frame);
   void AddMotionFrame(const robotio::DepthFrame& frame);
   // ICP between two keyframes of one Kinect; records an accepted pair.
   void AddPair(int sensor, const Keyframe& from, const Keyframe& to);
+  [[nodiscard]] std::optional<SessionStep> StepForUncalibrated() const;
   [[nodiscard]] StepTally& Tally(SessionStep step);
   [[nodiscard]] const StepTally& Tally(SessionStep step) const;
 

@@ -71,6 +71,7 @@ struct PairResidual {
   double t_s = 0.0;               // s since the first odometry reading.
   double rotation_deg = 0.0;      // deg, |rotation error| of predicted vs ICP motion.
   double translation_m = 0.0;     // m, |translation error|.
+  bool left_out = false;          // Left out of the solution as an outlier.
 };
 
 struct KinectEstimate {
