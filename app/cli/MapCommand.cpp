@@ -19,6 +19,7 @@
 #include "dynamap/mapping/MapFiles.hpp"
 #include "dynamap/mapping/PointCloudFiles.hpp"
 #include "dynamap/mapping/TrajectoryEvaluation.hpp"
+#include "dynamap/robotio/AtomicFile.hpp"
 #include "dynamap/robotio/Pose2D.hpp"
 #include "dynamap/robotio/RecordingReader.hpp"
 #include "dynamap/robotio/sim/RobotConfig.hpp"
@@ -228,6 +229,8 @@ void RunMap(const MapOptions& o) {
   };
   if (slam) {
     Check(robotio::WriteTumTrajectory(slam->trajectory, (out / "trajectory.tum").string()));
+    Check(robotio::WriteFileAtomically((out / "slam_scans.csv").string(),
+                                       ScanRecordsCsv(slam->scans)));
     AddSlamReport(reader, o, *slam, &report);
   }
   t = Clock::now();
@@ -293,7 +296,7 @@ void RegisterMapCommand(CLI::App& app) {
   auto options = std::make_shared<MapOptions>();
   CLI::App* map = app.add_subcommand(
       "map", "Integrate a recording into the dual static/dynamic 3D map with SLAM (or known) poses; "
-             "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png, trajectory.tum and "
+             "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png, trajectory.tum, slam_scans.csv and "
              "report.json");
   map->add_option("--log", options->log, "Recording directory")->required();
   map->add_option("--out", options->out, "Output directory")->required();

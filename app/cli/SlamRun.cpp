@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
+
+#include <Eigen/Eigenvalues>
 
 #include "dynamap/robotio/Time.hpp"
 
@@ -87,6 +90,22 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
     result.update_s.push_back(step.update_s);
     result.total_s.push_back(total);
     const std::int64_t stamp = frames.front().stamp_ns;
+    SlamScanRecord record;
+    record.stamp_ns = stamp;
+    record.predicted = step.predicted;
+    record.pose = step.pose;
+    record.reference = step.registered ? step.reference : "";
+    record.accepted = step.accepted;
+    record.reference_rebuilt = step.reference_rebuilt;
+    record.fitness_rmse_m = step.registration.fitness_rmse_m;
+    record.inlier_ratio = step.registration.inlier_ratio;
+    record.iterations = step.registration.iterations;
+    const Eigen::Vector3d eigenvalues =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(step.registration.planar_information)
+            .eigenvalues();
+    record.structure = eigenvalues(2) > 0.0 ? eigenvalues(0) / eigenvalues(2) : 0.0;
+    record.scan_points = step.scan_points;
+    result.scans.push_back(record);
     result.trajectory.push_back(robotio::ToStampedPose(stamp, step.pose));
     result.odometry.push_back(robotio::ToStampedPose(stamp, odometry.front()));
     for (std::size_t k = 0; k < frames.size(); ++k) {
@@ -98,6 +117,25 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
   std::sort(result.frame_poses.begin(), result.frame_poses.end(),
             [](const auto& a, const auto& b) { return a.stamp_ns < b.stamp_ns; });
   return result;
+}
+
+std::string ScanRecordsCsv(const std::vector<SlamScanRecord>& scans) {
+  std::string csv =
+      "stamp_s,predicted_x,predicted_y,predicted_theta,x,y,theta,reference,accepted,"
+      "reference_rebuilt,fitness_rmse_m,inlier_ratio,iterations,structure,scan_points\n";
+  char line[512];
+  for (const SlamScanRecord& r : scans) {
+    const bool registered = !r.reference.empty();
+    std::snprintf(line, sizeof(line),
+                  "%.6f,%.5f,%.5f,%.6f,%.5f,%.5f,%.6f,%s,%d,%d,%.5f,%.4f,%d,%.5f,%zu\n",
+                  robotio::NanosToSeconds(r.stamp_ns), r.predicted.x, r.predicted.y,
+                  r.predicted.theta, r.pose.x, r.pose.y, r.pose.theta,
+                  registered ? r.reference.c_str() : "none", r.accepted ? 1 : 0,
+                  r.reference_rebuilt ? 1 : 0, registered ? r.fitness_rmse_m : 0.0,
+                  r.inlier_ratio, r.iterations, r.structure, r.scan_points);
+    csv += line;
+  }
+  return csv;
 }
 
 }  // namespace dynamap::app

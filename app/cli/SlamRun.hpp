@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "dynamap/mapping/MotionModel.hpp"
@@ -22,6 +23,24 @@ struct SlamRunOptions {
   RunMode mode = RunMode::kPlayback;
 };
 
+// What SLAM did with one scan (slam_scans.csv): the odometry prediction, the pose it kept
+// and the registration behind the difference.
+struct SlamScanRecord {
+  std::int64_t stamp_ns = 0;
+  robotio::Pose2D predicted;
+  robotio::Pose2D pose;
+  std::string reference;  // "previous" or "map"; empty when nothing was registered.
+  bool accepted = false;
+  bool reference_rebuilt = false;
+  double fitness_rmse_m = 0.0;
+  double inlier_ratio = 0.0;
+  int iterations = 0;
+  // Smallest / largest eigenvalue of the planar information: how well the scan pins x, y
+  // and yaw (near 0 along a bare corridor).
+  double structure = 0.0;
+  std::size_t scan_points = 0;
+};
+
 struct SlamRunResult {
   robotio::Trajectory trajectory;   // T_map_base at each processed scan's capture time.
   robotio::Trajectory frame_poses;  // T_map_base at each processed frame's capture time.
@@ -30,9 +49,13 @@ struct SlamRunResult {
   std::size_t frames_dropped = 0;   // Simulate mode: not taken in time.
   std::size_t registrations_accepted = 0;
   std::size_t registrations_rejected = 0;  // Attempted, not applied.
+  std::vector<SlamScanRecord> scans;  // One per processed scan.
   // Wall time per processed scan of each stage (s).
   std::vector<double> preprocess_s, register_s, update_s, total_s;
 };
+
+// The per-scan records as CSV, one header line, SI units and radians.
+[[nodiscard]] std::string ScanRecordsCsv(const std::vector<SlamScanRecord>& scans);
 
 // Errors (an unreadable frame) are reported through Expected. `progress` gets the
 // fraction of scans done.
