@@ -59,18 +59,49 @@ Pose2D DriveIncrement(double left_m, double right_m, std::int64_t t0_ns, std::in
   return pose;
 }
 
+GyroBiasEstimator::GyroBiasEstimator(const MotionModelConfig& config) : config_(config) {}
+
+void GyroBiasEstimator::AddInterval(const robotio::OdometryReading& from,
+                                    const robotio::OdometryReading& to,
+                                    const std::vector<ImuReading>& imu) {
+  if (!config_.learn_gyro_bias || to.stamp_ns <= from.stamp_ns) return;
+  // Whole encoder ticks: a wheel that stood still reports exactly the same distance.
+  if (to.left_m != from.left_m || to.right_m != from.right_m) return;
+  auto by_stamp = [](const ImuReading& r, std::int64_t t) { return r.stamp_ns < t; };
+  const auto begin = std::lower_bound(imu.begin(), imu.end(), from.stamp_ns + 1, by_stamp);
+  const auto end = std::lower_bound(imu.begin(), imu.end(), to.stamp_ns + 1, by_stamp);
+  if (begin == end) return;
+  for (auto it = begin; it != end; ++it) {
+    if (std::abs(it->wz) > config_.max_learnt_bias_rad_s) return;
+  }
+  for (auto it = begin; it != end; ++it) rate_sum_ += it->wz;
+  samples_ += static_cast<std::size_t>(end - begin);
+  still_s_ += robotio::NanosToSeconds(to.stamp_ns - from.stamp_ns);
+}
+
+double GyroBiasEstimator::bias_rad_s() const {
+  if (!config_.learn_gyro_bias || samples_ == 0 || still_s_ < config_.min_still_s) {
+    return config_.gyro_bias_rad_s;
+  }
+  return rate_sum_ / static_cast<double>(samples_);
+}
+
 Trajectory2D DeadReckon(const std::vector<robotio::OdometryReading>& odometry,
                         const std::vector<ImuReading>& imu, const MotionModelConfig& config) {
   Trajectory2D trajectory;
   if (odometry.empty()) return trajectory;
   trajectory.reserve(odometry.size());
   trajectory.push_back({odometry.front().stamp_ns, Pose2D{}});
+  GyroBiasEstimator bias(config);
+  MotionModelConfig current = config;
   for (std::size_t i = 1; i < odometry.size(); ++i) {
     const auto& a = odometry[i - 1];
     const auto& b = odometry[i];
+    current.gyro_bias_rad_s = bias.bias_rad_s();
     const Pose2D delta = DriveIncrement(b.left_m - a.left_m, b.right_m - a.right_m,
-                                        a.stamp_ns, b.stamp_ns, imu, config);
+                                        a.stamp_ns, b.stamp_ns, imu, current);
     trajectory.push_back({b.stamp_ns, trajectory.back().pose.Compose(delta)});
+    bias.AddInterval(a, b, imu);
   }
   return trajectory;
 }

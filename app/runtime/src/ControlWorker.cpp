@@ -43,7 +43,12 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
                                 {now_ns, recovery_.v, recovery_.omega});
   }
 
-  // Look around once before following any plan: the first view is narrow.
+  // Stand still first (the gyro bias is learnt while the wheels do not move), then look
+  // around once before following any plan: the first view is narrow.
+  if (start_ns_ < 0) start_ns_ = now_ns;
+  if (now_ns - start_ns_ < robotio::SecondsToNanos(config_.initial_still_s)) {
+    return {now_ns, 0.0, 0.0};
+  }
   if (turned_rad_ < config_.initial_turn_rad) {
     turned_rad_ += config_.look_around_yaw_rate * dt_s;
     return {now_ns, 0.0, config_.look_around_yaw_rate};

@@ -6,7 +6,7 @@
 namespace dynamap::app::runtime {
 
 OdometryHistory::OdometryHistory(mapping::MotionModelConfig config, double keep_s)
-    : config_(config), keep_ns_(static_cast<std::int64_t>(keep_s * 1e9)) {}
+    : config_(config), bias_(config), keep_ns_(static_cast<std::int64_t>(keep_s * 1e9)) {}
 
 void OdometryHistory::Add(const std::vector<robotio::OdometryReading>& odometry,
                           const std::vector<robotio::ImuReading>& imu) {
@@ -26,8 +26,11 @@ void OdometryHistory::Add(const std::vector<robotio::OdometryReading>& odometry,
         [](const robotio::ImuReading& r, std::int64_t t) { return r.stamp_ns < t; });
     const auto begin = first == imu_.begin() ? first : first - 1;
     const std::vector<robotio::ImuReading> window(begin, imu_.end());
+    mapping::MotionModelConfig current = config_;
+    current.gyro_bias_rad_s = bias_.bias_rad_s();
     const robotio::Pose2D delta = mapping::DriveIncrement(
-        left, right, last_reading_->stamp_ns, reading.stamp_ns, window, config_);
+        left, right, last_reading_->stamp_ns, reading.stamp_ns, window, current);
+    bias_.AddInterval(*last_reading_, reading, window);
     poses_.push_back({reading.stamp_ns, poses_.back().pose.Compose(delta)});
     distance_m_ += std::abs(0.5 * (left + right));
     last_reading_ = reading;
@@ -55,6 +58,11 @@ std::optional<mapping::StampedPose2D> OdometryHistory::Latest() const {
   std::lock_guard<std::mutex> lock(mutex_);
   if (poses_.empty()) return std::nullopt;
   return poses_.back();
+}
+
+double OdometryHistory::gyro_bias_rad_s() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return bias_.bias_rad_s();
 }
 
 double OdometryHistory::distance_m() const {

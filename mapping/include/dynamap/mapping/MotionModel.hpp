@@ -18,6 +18,35 @@ struct MotionModelConfig {
   double gyro_bias_rad_s = 0.0;     // rad/s, subtracted from every yaw rate (base z).
   // s, a gyro sample older than this is not held over a gap (then wheels give heading).
   double max_gyro_gap_s = 0.1;
+  // Learn the bias while the wheels stand still: once min_still_s of standing still has
+  // been seen, the mean gyro yaw rate over it replaces gyro_bias_rad_s (a 0.003 rad/s
+  // bias, the simulated RMP's gyro, turns the heading 26° in 150 s).
+  bool learn_gyro_bias = true;
+  double min_still_s = 0.5;  // s.
+  // rad/s: a still interval with a gyro sample further from zero is not counted (the
+  // base was being turned by something else, not drifting).
+  double max_learnt_bias_rad_s = 0.05;
+};
+
+// The gyro's yaw-rate bias from the odometry intervals in which neither wheel moved (a
+// differential drive cannot turn then): the mean rate of the gyro samples in them.
+class GyroBiasEstimator {
+ public:
+  explicit GyroBiasEstimator(const MotionModelConfig& config);
+  // One odometry interval (from.stamp_ns, to.stamp_ns]; `imu` sorted by stamp, may hold
+  // samples outside the interval.
+  void AddInterval(const robotio::OdometryReading& from, const robotio::OdometryReading& to,
+                   const std::vector<robotio::ImuReading>& imu);
+  // The configured bias until min_still_s of standing still has been seen, then the
+  // learnt one (always the configured one when learning is off).
+  [[nodiscard]] double bias_rad_s() const;
+  [[nodiscard]] double still_s() const { return still_s_; }
+
+ private:
+  MotionModelConfig config_;
+  double still_s_ = 0.0;
+  double rate_sum_ = 0.0;
+  std::size_t samples_ = 0;
 };
 
 struct StampedPose2D {
@@ -36,7 +65,8 @@ using Trajectory2D = std::vector<StampedPose2D>;
                                              const MotionModelConfig& config);
 
 // The base pose at every odometry reading, starting at the identity at the first one.
-// Both inputs sorted by stamp.
+// Both inputs sorted by stamp. The gyro bias is learnt as it goes (GyroBiasEstimator):
+// each interval uses what the intervals before it showed.
 [[nodiscard]] Trajectory2D DeadReckon(const std::vector<robotio::OdometryReading>& odometry,
                                       const std::vector<robotio::ImuReading>& imu,
                                       const MotionModelConfig& config);

@@ -16,6 +16,8 @@ namespace dynamap::app::runtime {
 
 struct ControlWorkerConfig {
   double rate_hz = 20.0;                  // Hz of simulated time.
+  // s standing still at the start: the motion model learns the gyro bias meanwhile.
+  double initial_still_s = 2.0;
   double look_around_yaw_rate = 0.5;      // rad/s of the first look around.
   double initial_turn_rad = 6.3;          // rad turned in place before following plans.
   double recovery_s = 1.0;                // s of the guard's recovery motion after a stop.
@@ -47,6 +49,7 @@ class ControlWorker {
   std::int64_t recovery_until_ns_ = -1;
   robotio::VelocityCommand recovery_;
   double turned_rad_ = 0.0;
+  std::int64_t start_ns_ = -1;  // First control step.
 };
 
 }  // namespace dynamap::app::runtime

@@ -30,9 +30,12 @@ class OdometryHistory {
   [[nodiscard]] std::optional<mapping::StampedPose2D> Latest() const;
   // Total distance driven by the base centre (m).
   [[nodiscard]] double distance_m() const;
+  // rad/s, the gyro bias in use (learnt while the wheels stood still).
+  [[nodiscard]] double gyro_bias_rad_s() const;
 
  private:
   mapping::MotionModelConfig config_;
+  mapping::GyroBiasEstimator bias_;
   std::int64_t keep_ns_;
   mutable std::mutex mutex_;
   std::deque<mapping::StampedPose2D> poses_;
