@@ -36,7 +36,9 @@ struct MapOptions {
   std::string log;
   std::string out;
   std::string poses = "slam";
-  std::string reference = "combined";  // SLAM registration target (--poses slam).
+  std::string reference;  // SLAM registration target (--poses slam); "" = the settings'.
+  std::string slam;       // SLAM settings file (keys of mapping::SlamConfig); "" = defaults.
+  std::string slam_odometry = "wheels";  // Or "groundtruth" (diagnosis, see SlamRunOptions).
   std::string mode = "playback";       // Run mode of the SLAM pass (--poses slam).
   std::string update = "dynamic";
   double resolution_m = 0.05;
@@ -73,10 +75,18 @@ SlamRunResult RunSlamPass(const robotio::RecordingReader& reader, const MapOptio
                           const mapping::MappingConfig& config) {
   SlamRunOptions options;
   options.mapping = config;
-  options.slam.reference = o.reference == "previous" ? mapping::ReferenceStrategy::kPrevious
-                           : o.reference == "map"    ? mapping::ReferenceStrategy::kMap
-                                                     : mapping::ReferenceStrategy::kCombined;
+  if (!o.slam.empty()) {
+    auto slam = mapping::LoadSlamConfig(o.slam);
+    if (!slam) FailCommand(kCommand, slam.error().message);
+    options.slam = *slam;
+  }
+  if (!o.reference.empty()) {
+    options.slam.reference = o.reference == "previous" ? mapping::ReferenceStrategy::kPrevious
+                             : o.reference == "map"    ? mapping::ReferenceStrategy::kMap
+                                                       : mapping::ReferenceStrategy::kCombined;
+  }
   options.mode = o.mode == "simulate" ? RunMode::kSimulate : RunMode::kPlayback;
+  options.odometry_from_ground_truth = o.slam_odometry == "groundtruth";
   const std::string robot_file = fs::exists(o.robot) ? o.robot : ResourcePath(o.robot);
   auto robot = robotio::sim::LoadRobotConfig(robot_file);
   if (!robot) FailCommand(kCommand, robot.error().message);
@@ -99,7 +109,9 @@ nlohmann::json MedianAndP95(std::vector<double> seconds) {
 
 void AddSlamReport(const robotio::RecordingReader& reader, const MapOptions& o,
                    const SlamRunResult& slam, nlohmann::json* report) {
-  (*report)["reference"] = o.reference;
+  (*report)["reference"] = mapping::ReferenceStrategyName(slam.reference);
+  if (!o.slam.empty()) (*report)["slam_settings"] = o.slam;
+  (*report)["slam_odometry"] = o.slam_odometry;
   (*report)["mode"] = o.mode;
   (*report)["frames_processed"] = slam.frames_processed;
   (*report)["frames_dropped"] = slam.frames_dropped;
@@ -305,9 +317,18 @@ void RegisterMapCommand(CLI::App& app) {
       ->check(CLI::IsMember({"slam", "groundtruth", "odometry"}))
       ->capture_default_str();
   map->add_option("--reference", options->reference,
-                  "SLAM registration target: previous scan, map, or combined (map first)")
-      ->check(CLI::IsMember({"previous", "map", "combined"}))
+                  "SLAM registration target: previous scan, map, or combined (map first; the "
+                  "default unless --slam sets another)")
+      ->check(CLI::IsMember({"previous", "map", "combined"}));
+  map->add_option("--slam-odometry", options->slam_odometry,
+                  "What SLAM takes as odometry: wheels (+ gyro) or groundtruth (to measure "
+                  "the registration's own drift)")
+      ->check(CLI::IsMember({"wheels", "groundtruth"}))
       ->capture_default_str();
+  map->add_option("--slam", options->slam,
+                  "SLAM settings (YAML with the keys of mapping::SlamConfig, e.g. "
+                  "'max_correction_per_rad: 0.05') over the defaults; --reference wins")
+      ->check(CLI::ExistingFile);
   map->add_option("--mode", options->mode,
                   "SLAM run mode: playback (every frame, as fast as possible) or simulate "
                   "(recorded pace, late frames dropped and counted)")

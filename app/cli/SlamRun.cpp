@@ -20,6 +20,7 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
                                          const SlamRunOptions& options,
                                          const std::function<void(double)>& progress) {
   SlamRunResult result;
+  result.reference = options.slam.reference;
   const robotio::Rig& rig = reader.rig();
   // Capture stamps of the entries (receive stamp minus the sensor's latency), in order.
   const auto& entries = reader.depth_entries();
@@ -45,8 +46,17 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
   for (const auto& mount : rig.kinects) period_s = std::max(period_s, 1.0 / mount.rate_hz);
   const auto scans = mapping::GroupIntoScans(stamps, sensors, robotio::SecondsToNanos(period_s * 0.75));
 
-  const mapping::Trajectory2D dead_reckoning =
-      mapping::DeadReckon(reader.odometry(), reader.imu(), options.motion);
+  mapping::Trajectory2D dead_reckoning;
+  if (options.odometry_from_ground_truth) {
+    if (reader.ground_truth().empty()) {
+      return robotio::Error{reader.dir() + ": no groundtruth.txt to use as odometry"};
+    }
+    for (const robotio::StampedPose& g : reader.ground_truth()) {
+      dead_reckoning.push_back({g.stamp_ns, robotio::Pose2D::FromIsometry(g.pose)});
+    }
+  } else {
+    dead_reckoning = mapping::DeadReckon(reader.odometry(), reader.imu(), options.motion);
+  }
   if (dead_reckoning.empty()) return robotio::Error{reader.dir() + ": no odometry readings"};
   mapping::SlamLoop slam(options.slam, options.mapping, rig);
 

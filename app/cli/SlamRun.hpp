@@ -21,6 +21,9 @@ struct SlamRunOptions {
   mapping::MappingConfig mapping;
   mapping::MotionModelConfig motion;
   RunMode mode = RunMode::kPlayback;
+  // The recorded ground-truth path instead of wheels + gyro as odometry: what is left of
+  // the error is the registration's own (and the map's feedback on it).
+  bool odometry_from_ground_truth = false;
 };
 
 // What SLAM did with one scan (slam_scans.csv): the odometry prediction, the pose it kept
@@ -50,6 +53,7 @@ struct SlamRunResult {
   std::size_t registrations_accepted = 0;
   std::size_t registrations_rejected = 0;  // Attempted, not applied.
   std::vector<SlamScanRecord> scans;  // One per processed scan.
+  mapping::ReferenceStrategy reference = mapping::ReferenceStrategy::kCombined;  // Used.
   // Wall time per processed scan of each stage (s).
   std::vector<double> preprocess_s, register_s, update_s, total_s;
 };

@@ -86,8 +86,9 @@ PlaneFit FitPlane(const robotio::PointList& points, const PlaneFitConfig& config
     // height above the floor), which lift the plane where they stand. Narrowing the band
     // to a few times the inliers' own spread and refitting leaves them out.
     for (int round = 0; round < config.narrowing_rounds; ++round) {
-      const double band = std::clamp(config.narrowing_sigmas * RobustSpread(*cloud, inliers, coefficients),
-                                     config.min_band_m, config.distance_threshold_m);
+      const double spread = RobustSpread(*cloud, inliers, coefficients);
+      const double band = std::clamp(config.narrowing_sigmas * spread, config.min_band_m,
+                                     config.distance_threshold_m);
       pcl::Indices narrowed;
       model->selectWithinDistance(coefficients, band, narrowed);
       if (narrowed.size() < 3) break;

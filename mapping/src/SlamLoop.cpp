@@ -3,6 +3,7 @@
 #include <octomap/octomap_types.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <utility>
@@ -78,6 +79,13 @@ SlamConfig ParseSlamConfig(robotio::ConfigNode& node) {
   node.Read("reference_refresh_m", &config.reference_refresh_m, 0.0, 10.0);
   node.Read("reference_max_age_s", &config.reference_max_age_s, 0.0, 60.0);
   node.Read("registration_voxel_m", &config.registration_voxel_m, 0.0, 1.0);
+  node.Read("degenerate_eigen_ratio", &config.degenerate_eigen_ratio, 0.0, 1.0);
+  node.Read("fuse_with_odometry", &config.fuse_with_odometry);
+  node.Read("odometry_sigma_per_sqrt_m", &config.odometry_sigma_per_sqrt_m, 0.0, 1.0);
+  node.Read("odometry_sigma_per_sqrt_rad", &config.odometry_sigma_per_sqrt_rad, 0.0, 1.0);
+  node.Read("heading_sigma_per_sqrt_s", &config.heading_sigma_per_sqrt_s, 0.0, 1.0);
+  node.Read("registration_sigma_m", &config.registration_sigma_m, 1e-6, 1.0);
+  node.Read("registration_sigma_rad", &config.registration_sigma_rad, 1e-6, 1.0);
   int min_scan = static_cast<int>(config.min_scan_points);
   int min_reference = static_cast<int>(config.min_reference_points);
   node.Read("min_scan_points", &min_scan, 10, 1'000'000);
@@ -88,6 +96,11 @@ SlamConfig ParseSlamConfig(robotio::ConfigNode& node) {
     config.registration = ParseRegistrationConfig(*registration);
   }
   return config;
+}
+
+robotio::Expected<SlamConfig> LoadSlamConfig(const std::string& file) {
+  return robotio::ParseYamlFile<SlamConfig>(
+      file, [](robotio::ConfigNode& node) { return ParseSlamConfig(node); });
 }
 
 SlamLoop::SlamLoop(SlamConfig config, const MappingConfig& mapping, robotio::Rig rig)
@@ -133,6 +146,21 @@ bool SlamLoop::UpdateMapTarget(const robotio::Pose2D& predicted, std::int64_t st
   return true;
 }
 
+robotio::Pose2D SlamLoop::Fuse(const robotio::Pose2D& predicted,
+                               const robotio::Pose2D& registered) {
+  if (!config_.fuse_with_odometry) return registered;
+  const double r_xy = config_.registration_sigma_m * config_.registration_sigma_m;
+  const double r_theta = config_.registration_sigma_rad * config_.registration_sigma_rad;
+  const double k_xy = position_variance_ / (position_variance_ + r_xy);
+  const double k_theta = heading_variance_ / (heading_variance_ + r_theta);
+  position_variance_ *= 1.0 - k_xy;
+  heading_variance_ *= 1.0 - k_theta;
+  return {predicted.x + k_xy * (registered.x - predicted.x),
+          predicted.y + k_xy * (registered.y - predicted.y),
+          robotio::WrapAngle(predicted.theta +
+                             k_theta * robotio::WrapAngle(registered.theta - predicted.theta))};
+}
+
 bool SlamLoop::Acceptable(const RegistrationResult& result, const robotio::Pose2D& predicted,
                           const robotio::Pose2D& corrected, const Motion& since) const {
   if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
@@ -163,6 +191,18 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
       last_odometry_ ? last_odometry_->Between(odometry) : robotio::Pose2D{};
   step.predicted = last_odometry_ ? pose_.Compose(increment) : odometry;
   last_odometry_ = odometry;
+  // What odometry and gyro may have got wrong over this increment (fusion prior).
+  const std::int64_t stamp_ns = frames.front().stamp_ns;
+  const double elapsed_s =
+      last_stamp_ns_ >= 0 ? std::max(0.0, static_cast<double>(stamp_ns - last_stamp_ns_) * 1e-9)
+                          : 0.0;
+  last_stamp_ns_ = stamp_ns;
+  position_variance_ += config_.odometry_sigma_per_sqrt_m * config_.odometry_sigma_per_sqrt_m *
+                        std::hypot(increment.x, increment.y);
+  heading_variance_ +=
+      config_.odometry_sigma_per_sqrt_rad * config_.odometry_sigma_per_sqrt_rad *
+          std::abs(increment.theta) +
+      config_.heading_sigma_per_sqrt_s * config_.heading_sigma_per_sqrt_s * elapsed_s;
 
   // Line 5: both Kinects in base at the scan's time, voxel filter, dynamic points out.
   auto t = Clock::now();
@@ -207,7 +247,7 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
         prediction, robotio::Pose2D::FromIsometry(step.registration.T_target_source),
         step.registration.planar_information, config_.degenerate_eigen_ratio);
     if (!Acceptable(step.registration, prediction, corrected, motion)) return false;
-    step.pose = corrected;
+    step.pose = Fuse(step.predicted, corrected);
     step.accepted = true;
     return true;
   };

@@ -19,3 +19,27 @@ poses=$(grep -vc '^#' "$scratch/map/trajectory.tum")
 sed -n 2p "$csv" | grep -q ",none,0," || { echo "first scan was registered" >&2; exit 1; }
 registered=$(grep -c ",map,\|,previous," "$csv")
 [ "$registered" -ge $((rows - 1)) ] || { echo "$registered of $rows scans registered" >&2; exit 1; }
+
+# SLAM settings from a file, the registration fed ground truth as odometry.
+printf 'reference: previous\nmax_correction_per_rad: 0.1\n' > "$scratch/slam.yaml"
+"$dynamap" map --log "$scratch/rec" --out "$scratch/map2" --slam "$scratch/slam.yaml" \
+  --slam-odometry groundtruth 2>/dev/null >/dev/null
+grep -q '"reference": "previous"' "$scratch/map2/report.json" || {
+  echo "the settings file's reference was not used" >&2; exit 1; }
+grep -q '"slam_odometry": "groundtruth"' "$scratch/map2/report.json" || {
+  echo "report.json does not say SLAM ran on ground truth" >&2; exit 1; }
+# --reference wins over the file.
+"$dynamap" map --log "$scratch/rec" --out "$scratch/map3" --slam "$scratch/slam.yaml" \
+  --reference map 2>/dev/null >/dev/null
+grep -q '"reference": "map"' "$scratch/map3/report.json" || {
+  echo "--reference did not override the settings file" >&2; exit 1; }
+printf 'max_correction_per_radian: 0.1\n' > "$scratch/bad_slam.yaml"
+set +e
+err=$("$dynamap" map --log "$scratch/rec" --out "$scratch/map4" --slam "$scratch/bad_slam.yaml" 2>&1 >/dev/null)
+code=$?
+set -e
+[ "$code" -ne 0 ] || { echo "a misspelt SLAM setting was accepted" >&2; exit 1; }
+case "$err" in
+  *"bad_slam.yaml"*"max_correction_per_radian"*) ;;
+  *) echo "unexpected error: $err" >&2; exit 1 ;;
+esac

@@ -122,10 +122,45 @@ SlamRun RunSlam(const OfficeDrive& drive, const SlamConfig& config) {
 }
 
 // SLAM with the default settings must end closer to the truth than odometry + gyro alone.
+// SLAM settings from a file (dynamap map --slam): keys over the defaults, a nested
+// registration block, and an unknown key refused naming the file and the key.
+TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
+  const std::string dir = ::testing::TempDir();
+  const std::string good = dir + "/slam_good.yaml";
+  const std::string bad = dir + "/slam_bad.yaml";
+  std::FILE* f = std::fopen(good.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs("reference: map\nmax_correction_per_rad: 0.05\ndegenerate_eigen_ratio: 0.1\n"
+             "registration: {trim_ratio: 0.8}\n", f);
+  std::fclose(f);
+  f = std::fopen(bad.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs("max_correction_per_radian: 0.05\n", f);
+  std::fclose(f);
+
+  const auto config = LoadSlamConfig(good);
+  ASSERT_TRUE(config.ok()) << config.error().message;
+  EXPECT_EQ(config->reference, ReferenceStrategy::kMap);
+  EXPECT_DOUBLE_EQ(config->max_correction_per_rad, 0.05);
+  EXPECT_DOUBLE_EQ(config->degenerate_eigen_ratio, 0.1);
+  EXPECT_DOUBLE_EQ(config->registration.trim_ratio, 0.8);
+  EXPECT_DOUBLE_EQ(config->max_correction_per_m, SlamConfig{}.max_correction_per_m);
+
+  const auto refused = LoadSlamConfig(bad);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("slam_bad.yaml"), std::string::npos);
+  EXPECT_NE(refused.error().message.find("max_correction_per_radian"), std::string::npos);
+}
+
 TEST(SlamLoop, ReducedOfficeDriveBeatsOdometry) {
   const OfficeDrive drive = DriveThroughTheOffice(true);
   ASSERT_GT(drive.frames.size(), 100u);
-  const SlamRun run = RunSlam(drive, SlamConfig{});
+  // The fusion's prior told of the inflated errors: 3 % wheel scales and a 0.01 rad/s gyro
+  // bias that no standstill let the motion model learn.
+  SlamConfig config;
+  config.odometry_sigma_per_sqrt_m = 0.05;
+  config.heading_sigma_per_sqrt_s = 0.01;
+  const SlamRun run = RunSlam(drive, config);
   const std::size_t accepted = static_cast<std::size_t>(std::count_if(
       run.steps.begin(), run.steps.end(), [](const SlamStep& s) { return s.accepted; }));
   // Both estimates start at the odometry origin = the map origin = the true start pose.
@@ -136,7 +171,7 @@ TEST(SlamLoop, ReducedOfficeDriveBeatsOdometry) {
   // in the directions the scan constrains: nearly all are accepted (with a per-scan gate
   // on the whole correction, about half were on a 320 px office drive).
   EXPECT_GT(accepted, run.estimate.size() * 9 / 10);
-  EXPECT_LT(slam_error->ate_m.rmse, odometry_error->ate_m.rmse);
+  EXPECT_LT(slam_error->ate_m.rmse, 0.5 * odometry_error->ate_m.rmse);
   RecordProperty("slam_ate_m", std::to_string(slam_error->ate_m.rmse));
   RecordProperty("odometry_ate_m", std::to_string(odometry_error->ate_m.rmse));
   std::printf("SLAM ATE %.4f m, odometry ATE %.4f m, %zu/%zu accepted\n", slam_error->ate_m.rmse,
