@@ -11,6 +11,7 @@
 #include "cli/Interrupt.hpp"
 #include "cli/ProgressLine.hpp"
 #include "dynamap/app/runtime/MissionRuntime.hpp"
+#include "dynamap/mapping/SlamLoop.hpp"
 #include "dynamap/planning/PlanningConfig.hpp"
 
 namespace dynamap::app {
@@ -22,6 +23,7 @@ struct ExploreOptions {
   std::string rig = ResourcePath("rigs/two_kinects.yaml");
   std::string robot = ResourcePath("robots/segway_rmp50.yaml");
   std::string planning;  // Planning settings over the defaults; "" = defaults.
+  std::string slam;      // SLAM settings over the defaults (--poses slam); "" = defaults.
   std::string out;
   std::uint64_t seed = 1;
   double max_time_s = 1200.0;
@@ -64,6 +66,11 @@ void Run(const ExploreOptions& options) {
     auto planning = planning::LoadPlanningConfig(options.planning);
     if (!planning) FailCommand("explore", planning.error().message);
     config.planning = *planning;
+  }
+  if (!options.slam.empty()) {
+    auto slam = mapping::LoadSlamConfig(options.slam);
+    if (!slam) FailCommand("explore", slam.error().message);
+    config.slam = *slam;
   }
   config.planning.targets.strategy = options.targets == "nearest-frontier" ? "nearest-frontier"
                                                                            : "gain";
@@ -134,6 +141,10 @@ void RegisterExploreCommand(CLI::App& app) {
   cmd->add_option("--planning", options->planning,
                   "Planning settings (YAML, the keys of planning::PlanningConfig) over the "
                   "defaults, e.g. 'targets: {frontiers_first: true}'")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--slam", options->slam,
+                  "SLAM settings (YAML, the keys of mapping::SlamConfig) over the defaults, "
+                  "as for dynamap map --slam")
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", options->out, "Output folder (default: a new runs/explore-* folder)");
   cmd->add_option("--seed", options->seed, "Simulator seed");
