@@ -49,7 +49,7 @@ struct SlamConfig {
   // its local map, and rebuilt once the robot is this far from where it was built (the
   // scan must stay inside it) or it is this old. Rebuilt every 0.1 s, it followed the
   // voxels each scan had just written from its own slightly wrong pose, and the pose
-  // random-walked: 0.35 m ATE over a 150 s mission recording even with ground truth for
+  // random-walked: 0.15 m ATE over a 150 s mission recording even with ground truth for
   // odometry (0.06 m with 2 s, 0.07 m with 1 s; 2 s left a short low-resolution drive with
   // too little of what came into view). A robot standing in a crowd is kept from registering to
   // people who left by the fusion below, which gives no weight to a registration while
