@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -17,6 +18,7 @@ constexpr int kWidth = 900;
 constexpr int kPanelHeight = 260;
 constexpr int kMarginLeft = 80;
 constexpr int kMarginTop = 40;
+constexpr int kMarginBottom = 20;  // Room for the time axis label under the last panel.
 
 const cv::Scalar kKinectColours[] = {{200, 90, 30}, {40, 140, 230}, {60, 170, 60}};
 const cv::Scalar kInitialColour(190, 190, 190);
@@ -87,12 +89,15 @@ void DrawPanel(cv::Mat* image, int top, const std::string& y_label, const std::s
 robotio::Status WritePlot(const std::string& file, const std::string& title,
                           const std::string& x_label,
                           const std::vector<std::pair<std::string, std::vector<Series>>>& panels) {
-  cv::Mat image(kMarginTop + static_cast<int>(panels.size()) * kPanelHeight, kWidth, CV_8UC3,
+  const int height = kMarginTop + static_cast<int>(panels.size()) * kPanelHeight + kMarginBottom;
+  cv::Mat image(height, kWidth, CV_8UC3,
                 cv::Scalar(255, 255, 255));
   cv::putText(image, title, {10, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.6, {0, 0, 0}, 1, cv::LINE_AA);
   for (std::size_t i = 0; i < panels.size(); ++i) {
+    // The panels share the time axis: its label under the last one only (under the others
+    // it ran into the next panel's legend).
     DrawPanel(&image, kMarginTop + 25 + static_cast<int>(i) * kPanelHeight, panels[i].first,
-              x_label, panels[i].second);
+              i + 1 == panels.size() ? x_label : std::string(), panels[i].second);
   }
   std::vector<unsigned char> png;
   if (!cv::imencode(".png", image, png)) return robotio::Error{file + ": PNG encoding failed"};
