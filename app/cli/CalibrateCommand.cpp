@@ -101,20 +101,16 @@ void Feed(cal::CalibrationSession* session, const sim::SimOutput& out, GroundTru
 class SimulatedDrive {
  public:
   SimulatedDrive(cal::CalibrationSession* session, const CalibrateOptions& options,
-                 GroundTruth* truth)
+                 const sim::RobotConfig& robot, GroundTruth* truth)
       : session_(session), truth_(truth) {
     auto world = sim::LoadWorld(options.world);
     if (!world) FailCommand(kCommand, world.error().message);
-    auto robot = sim::LoadRobotConfig(options.robot.empty()
-                                          ? ResourcePath("robots/segway_rmp50.yaml")
-                                          : options.robot);
-    if (!robot) FailCommand(kCommand, robot.error().message);
     truth->rig = PerturbedTruth(session->guess(), options);
-    truth->scale_left = 1.0 / (1.0 + robot->encoder_scale_error_left);
-    truth->scale_right = 1.0 / (1.0 + robot->encoder_scale_error_right);
+    truth->scale_left = 1.0 / (1.0 + robot.encoder_scale_error_left);
+    truth->scale_right = 1.0 / (1.0 + robot.encoder_scale_error_right);
     sim::SimulatorConfig config;
     config.seed = options.seed;
-    simulator_ = std::make_unique<sim::Simulator>(*world, *robot, truth->rig, config);
+    simulator_ = std::make_unique<sim::Simulator>(*world, robot, truth->rig, config);
   }
 
   // Drives `step` until complete (or its phases time out); `label` heads the progress line.
@@ -174,8 +170,9 @@ class SimulatedDrive {
 // again. Returns the steps redone, in order.
 std::vector<std::string> CalibrateInSimulator(cal::CalibrationSession* session,
                                               const CalibrateOptions& options,
+                                              const sim::RobotConfig& robot,
                                               GroundTruth* truth) {
-  SimulatedDrive drive(session, options, truth);
+  SimulatedDrive drive(session, options, robot, truth);
   for (const cal::SessionStep step : {cal::SessionStep::kFloor, cal::SessionStep::kTurn,
                                       cal::SessionStep::kStraight, cal::SessionStep::kArcs}) {
     drive.Drive(step, "calibrating");
@@ -297,18 +294,20 @@ void Run(const CalibrateOptions& options) {
 
   cal::SessionConfig config;
   std::optional<GroundTruth> truth;
+  std::optional<sim::RobotConfig> robot;
   if (!options.world.empty()) {
-    auto robot = sim::LoadRobotConfig(options.robot.empty()
-                                          ? ResourcePath("robots/segway_rmp50.yaml")
-                                          : options.robot);
-    if (!robot) FailCommand(kCommand, robot.error().message);
+    auto loaded = sim::LoadRobotConfig(options.robot.empty()
+                                           ? ResourcePath("robots/segway_rmp50.yaml")
+                                           : options.robot);
+    if (!loaded) FailCommand(kCommand, loaded.error().message);
+    robot = *loaded;
     config.track_width_m = robot->track_width_m;
   }
   cal::CalibrationSession session(*guess, config);
   std::vector<std::string> redone;
-  if (!options.world.empty()) {
+  if (robot) {
     truth.emplace();
-    redone = CalibrateInSimulator(&session, options, &*truth);
+    redone = CalibrateInSimulator(&session, options, *robot, &*truth);
   } else {
     ReplayRecording(&session, options.log);
     session.Solve();

@@ -36,17 +36,28 @@ void ExpectRecovered(const SolverResult& result, const robotio::Rig& truth,
   EXPECT_TRUE(result.AllCalibrated());
 }
 
+// The full guided sequence from the true rig, the guess off by up to 10° and 10 cm.
+struct GuidedCapture {
+  robotio::Rig truth = test::TrueRig();
+  test::SyntheticOptions options;
+  CaptureData capture;
+};
+
+GuidedCapture Guided(unsigned seed) {
+  GuidedCapture guided;
+  const robotio::Rig guess = test::PerturbedRig(guided.truth, 10.0 * kDeg, 0.10, 0.0, seed);
+  guided.options.segments = test::GuidedSegments();
+  guided.options.seed = seed;
+  guided.capture = test::Synthesize(guided.truth, guess, guided.options);
+  return guided;
+}
+
 class SolverRecovers : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(SolverRecovers, PerturbedRigFromGuidedMotion) {
-  const robotio::Rig truth = test::TrueRig();
-  const robotio::Rig guess = test::PerturbedRig(truth, 10.0 * kDeg, 0.10, 0.0, GetParam());
-  test::SyntheticOptions options;
-  options.segments = test::GuidedSegments();
-  options.seed = GetParam();
-  const CaptureData capture = test::Synthesize(truth, guess, options);
-  const SolverResult result = SolveRig(capture, SolverConfig{});
-  ExpectRecovered(result, truth, options);
+  const GuidedCapture guided = Guided(GetParam());
+  const SolverResult result = SolveRig(guided.capture, SolverConfig{});
+  ExpectRecovered(result, guided.truth, guided.options);
   // Both Kinects see the same base motion once calibrated.
   EXPECT_GT(result.cross_check_pairs, 10);
   EXPECT_LT(result.cross_check_rotation_rms_deg, 0.2);
@@ -102,16 +113,11 @@ TEST(RigSolver, WithoutDrivingYawIsNotCalibrated) {
 // ICP that locked onto the wrong structure: one pair 0.5 m off. The first solve finds it
 // far outside the others' misfit; it is left out and the rig is recovered as without it.
 TEST(RigSolver, AGrossIcpFailureIsLeftOut) {
-  const robotio::Rig truth = test::TrueRig();
-  const robotio::Rig guess = test::PerturbedRig(truth, 10.0 * kDeg, 0.10, 0.0, 4);
-  test::SyntheticOptions options;
-  options.segments = test::GuidedSegments();
-  options.seed = 4;
-  CaptureData capture = test::Synthesize(truth, guess, options);
-  std::vector<MotionPair>& motions = capture.kinects[0].motions;
+  GuidedCapture guided = Guided(4);
+  std::vector<MotionPair>& motions = guided.capture.kinects[0].motions;
   ASSERT_GT(motions.size(), 20u);
   motions[motions.size() / 3].T_from_to.translation() += Eigen::Vector3d(0.5, 0.0, 0.2);
-  const SolverResult result = SolveRig(capture, SolverConfig{});
+  const SolverResult result = SolveRig(guided.capture, SolverConfig{});
   EXPECT_GE(result.outlier_pairs, 1);
   EXPECT_LT(result.outlier_pairs, 5);
   // The corrupted pair is among those left out (marked for the residual plots).
@@ -126,19 +132,16 @@ TEST(RigSolver, AGrossIcpFailureIsLeftOut) {
   }
   EXPECT_EQ(marked, result.outlier_pairs);
   EXPECT_TRUE(corrupted_marked);
-  ExpectRecovered(result, truth, options);
+  ExpectRecovered(result, guided.truth, guided.options);
 }
 
 // In a corridor ICP cannot tell how far the sensor slid along it: such pairs carry large
 // errors in that one direction, and their information says so. The solver must give that
 // direction no weight; with uniform weights the same errors pull x/y off.
 TEST(RigSolver, ErrorsAlongADirectionTheSceneCannotPinAreIgnored) {
-  const robotio::Rig truth = test::TrueRig();
-  const robotio::Rig guess = test::PerturbedRig(truth, 10.0 * kDeg, 0.10, 0.0, 6);
-  test::SyntheticOptions options;
-  options.segments = test::GuidedSegments();
-  options.seed = 6;
-  CaptureData weighted = test::Synthesize(truth, guess, options);
+  const GuidedCapture guided = Guided(6);
+  const robotio::Rig& truth = guided.truth;
+  CaptureData weighted = guided.capture;
   CaptureData uniform = weighted;
   for (std::size_t k = 0; k < weighted.kinects.size(); ++k) {
     for (std::size_t i = 0; i < weighted.kinects[k].motions.size(); i += 2) {
