@@ -22,6 +22,7 @@
 #include "dynamap/robotio/AtomicFile.hpp"
 #include "dynamap/robotio/Pose2D.hpp"
 #include "dynamap/robotio/RecordingReader.hpp"
+#include "dynamap/robotio/hardware/OniUnpacking.hpp"
 #include "dynamap/robotio/sim/RobotConfig.hpp"
 #include "dynamap/robotio/sim/StaticSurfaces.hpp"
 #include "dynamap/robotio/sim/WorldLoader.hpp"
@@ -109,10 +110,21 @@ nlohmann::json MedianAndP95(std::vector<double> seconds) {
 
 void AddSlamReport(const robotio::RecordingReader& reader, const MapOptions& o,
                    const SlamRunResult& slam, nlohmann::json* report) {
-  (*report)["reference"] = mapping::ReferenceStrategyName(slam.reference);
-  if (!o.slam.empty()) (*report)["slam_settings"] = o.slam;
-  (*report)["slam_odometry"] = o.slam_odometry;
+  if (slam.tracking_only) {
+    (*report)["reference"] = "keyframes";
+  } else {
+    (*report)["reference"] = mapping::ReferenceStrategyName(slam.reference);
+    if (!o.slam.empty()) (*report)["slam_settings"] = o.slam;
+    (*report)["slam_odometry"] = o.slam_odometry;
+  }
   (*report)["mode"] = o.mode;
+  (*report)["pose_source"] = slam.tracking_only ? "registration only (no odometry)"
+                                                 : "odometry, gyro and registration";
+  (*report)["ate_aligned"] = slam.tracking_only;
+  if (slam.tracking_only) {
+    (*report)["keyframes"] = slam.keyframes;
+    (*report)["track_restarts"] = slam.track_restarts;
+  }
   (*report)["frames_processed"] = slam.frames_processed;
   (*report)["frames_dropped"] = slam.frames_dropped;
   (*report)["registrations_accepted"] = slam.registrations_accepted;
@@ -126,8 +138,13 @@ void AddSlamReport(const robotio::RecordingReader& reader, const MapOptions& o,
   (*report)["slam_frames_per_s"] =
       busy_s > 0.0 ? static_cast<double>(slam.frames_processed) / busy_s : 0.0;
   // DESIGN.md, Evaluation: no alignment; ground truth and estimate share the map origin.
+  // Tracked without odometry (a TUM sequence), the estimate's frame is the first camera
+  // pose and the ground truth's the motion capture's: then aligned rigidly, as the TUM
+  // benchmark does.
   const auto& truth = reader.ground_truth();
-  const auto estimate = mapping::EvaluateTrajectory(truth, slam.trajectory, {});
+  mapping::TrajectoryEvaluationConfig evaluation;
+  evaluation.align = slam.tracking_only;
+  const auto estimate = mapping::EvaluateTrajectory(truth, slam.trajectory, evaluation);
   const auto odometry = mapping::EvaluateTrajectory(truth, slam.odometry, {});
   (*report)["ate_rmse_m"] = estimate ? nlohmann::json(estimate->ate_m.rmse) : nlohmann::json();
   (*report)["odometry_ate_rmse_m"] =
@@ -147,9 +164,32 @@ std::optional<robotio::PointList> SurfaceSamples(const robotio::RecordingReader&
   return robotio::sim::SampleStaticSurfaces(*world, spacing_m);
 }
 
+bool IsOniFile(const std::string& path) {
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".oni") == 0;
+}
+
+// An OpenNI2 recording is first unpacked into OUT/recording (dynamap's format, one level
+// camera, no odometry) and mapped from there.
+std::string UnpackedRecording(const MapOptions& o) {
+  const std::string dir = (fs::path(o.out) / "recording").string();
+  std::error_code ec;
+  if (fs::exists(dir, ec)) {
+    FailCommand(kCommand, dir + ": already exists; give --out a new folder for " + o.log);
+  }
+  ProgressLine progress("unpacking");
+  auto unpacked = robotio::hardware::UnpackOniFile(
+      o.log, dir, [&](double f) { progress.Update(f, "frames"); });
+  if (!unpacked) FailCommand(kCommand, unpacked.error().message);
+  progress.Finish(std::to_string(unpacked->frames) + " frames");
+  return dir;
+}
+
 void RunMap(const MapOptions& o) {
   const auto start = Clock::now();
-  auto opened = robotio::RecordingReader::Open(o.log);
+  std::error_code ec;
+  fs::create_directories(o.out, ec);
+  if (ec) FailCommand(kCommand, o.out + ": cannot create the output directory: " + ec.message());
+  auto opened = robotio::RecordingReader::Open(IsOniFile(o.log) ? UnpackedRecording(o) : o.log);
   if (!opened) FailCommand(kCommand, opened.error().message);
   if (!o.rig.empty()) {
     auto rig = robotio::LoadRig(o.rig);
@@ -172,10 +212,6 @@ void RunMap(const MapOptions& o) {
   mapping::DualMap map(config);
   const bool labelled = !reader.label_entries().empty();
   mapping::PointAccuracyCounter accuracy(config.resolution_m, config.max_range_m, o.eval_stride);
-
-  std::error_code ec;
-  fs::create_directories(o.out, ec);
-  if (ec) FailCommand(kCommand, o.out + ": cannot create the output directory: " + ec.message());
 
   double load_s = 0.0, project_s = 0.0, insert_s = 0.0, label_s = 0.0;
   std::size_t frames = 0, skipped = 0;
@@ -310,7 +346,10 @@ void RegisterMapCommand(CLI::App& app) {
       "map", "Integrate a recording into the dual static/dynamic 3D map with SLAM (or known) poses; "
              "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png, trajectory.tum, slam_scans.csv and "
              "report.json");
-  map->add_option("--log", options->log, "Recording directory")->required();
+  map->add_option("--log", options->log,
+                  "Recording directory (dynamap's or a TUM RGB-D sequence), or an OpenNI2 .oni "
+                  "file; without odometry the camera is tracked by registration alone")
+      ->required();
   map->add_option("--out", options->out, "Output directory")->required();
   map->add_option("--poses", options->poses,
                   "Pose source: slam (odometry + gyro corrected by ICP), groundtruth, odometry")

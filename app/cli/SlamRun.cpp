@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 
 #include <Eigen/Eigenvalues>
 
@@ -13,6 +14,79 @@ namespace dynamap::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// What one scan gave, from either estimator.
+struct ScanOutcome {
+  SlamScanRecord record;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // T_map_base at the scan.
+  std::vector<Eigen::Isometry3d> frame_poses;              // One per frame of the scan.
+  robotio::Pose2D odometry;  // Odometry pose at the scan (odometry runs only).
+  bool registered = false, accepted = false;
+  double preprocess_s = 0.0, register_s = 0.0, update_s = 0.0;
+};
+
+double Structure(const Eigen::Matrix3d& planar_information) {
+  const Eigen::Vector3d eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(planar_information).eigenvalues();
+  return eigenvalues(2) > 0.0 ? eigenvalues(0) / eigenvalues(2) : 0.0;
+}
+
+void FillRegistration(const mapping::RegistrationResult& registration, SlamScanRecord* record) {
+  record->fitness_rmse_m = registration.fitness_rmse_m;
+  record->inlier_ratio = registration.inlier_ratio;
+  record->iterations = registration.iterations;
+  record->structure = Structure(registration.planar_information);
+}
+
+ScanOutcome ProcessWithOdometry(mapping::SlamLoop& slam, const mapping::Trajectory2D& dead_reckoning,
+                                const std::vector<robotio::DepthFrame>& frames) {
+  std::vector<robotio::Pose2D> odometry;
+  for (const robotio::DepthFrame& frame : frames) {
+    odometry.push_back(mapping::PoseAt(dead_reckoning, frame.stamp_ns));
+  }
+  const mapping::SlamStep step = slam.ProcessScan(frames, odometry);
+  ScanOutcome out;
+  out.record.stamp_ns = frames.front().stamp_ns;
+  out.record.predicted = step.predicted;
+  out.record.pose = step.pose;
+  out.record.reference = step.registered ? step.reference : "";
+  out.record.accepted = step.accepted;
+  out.record.reference_rebuilt = step.reference_rebuilt;
+  FillRegistration(step.registration, &out.record);
+  out.record.scan_points = step.scan_points;
+  out.pose = step.pose.ToIsometry();
+  for (const robotio::Pose2D& at : odometry) {
+    out.frame_poses.push_back(step.pose.Compose(odometry.front().Between(at)).ToIsometry());
+  }
+  out.odometry = odometry.front();
+  out.registered = step.registered;
+  out.accepted = step.accepted;
+  out.preprocess_s = step.preprocess_s;
+  out.register_s = step.register_s;
+  out.update_s = step.update_s;
+  return out;
+}
+
+ScanOutcome ProcessByRegistration(mapping::CameraTracker& tracker,
+                                  const std::vector<robotio::DepthFrame>& frames) {
+  const mapping::TrackerStep step = tracker.Track(frames);
+  ScanOutcome out;
+  out.record.stamp_ns = step.stamp_ns;
+  out.record.predicted = robotio::Pose2D::FromIsometry(step.predicted);
+  out.record.pose = robotio::Pose2D::FromIsometry(step.pose);
+  out.record.reference = step.registered ? "keyframes" : "";
+  out.record.accepted = step.accepted;
+  out.record.reference_rebuilt = step.keyframe;
+  FillRegistration(step.registration, &out.record);
+  out.record.scan_points = step.scan_points;
+  out.pose = step.pose;
+  out.frame_poses.assign(frames.size(), step.pose);
+  out.registered = step.registered;
+  out.accepted = step.accepted;
+  out.preprocess_s = step.preprocess_s;
+  out.register_s = step.register_s;
+  return out;
+}
 
 }  // namespace
 
@@ -46,6 +120,9 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
   for (const auto& mount : rig.kinects) period_s = std::max(period_s, 1.0 / mount.rate_hz);
   const auto scans = mapping::GroupIntoScans(stamps, sensors, robotio::SecondsToNanos(period_s * 0.75));
 
+  // Without odometry (a TUM RGB-D sequence, a rig carried by hand) registration alone
+  // tracks the camera in 6-DoF.
+  const bool tracking_only = !options.odometry_from_ground_truth && reader.odometry().empty();
   mapping::Trajectory2D dead_reckoning;
   if (options.odometry_from_ground_truth) {
     if (reader.ground_truth().empty()) {
@@ -54,11 +131,20 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
     for (const robotio::StampedPose& g : reader.ground_truth()) {
       dead_reckoning.push_back({g.stamp_ns, robotio::Pose2D::FromIsometry(g.pose)});
     }
-  } else {
+  } else if (!tracking_only) {
     dead_reckoning = mapping::DeadReckon(reader.odometry(), reader.imu(), options.motion);
   }
-  if (dead_reckoning.empty()) return robotio::Error{reader.dir() + ": no odometry readings"};
-  mapping::SlamLoop slam(options.slam, options.mapping, rig);
+  if (!tracking_only && dead_reckoning.empty()) {
+    return robotio::Error{reader.dir() + ": no odometry readings"};
+  }
+  std::optional<mapping::SlamLoop> slam;
+  std::optional<mapping::CameraTracker> tracker;
+  if (tracking_only) {
+    tracker.emplace(options.tracker, rig);
+  } else {
+    slam.emplace(options.slam, options.mapping, rig);
+  }
+  result.tracking_only = tracking_only;
 
   // Simulate mode: a clock at the recording's pace that the SLAM work advances; a scan
   // is taken when SLAM is free, and only the newest one that has arrived by then.
@@ -77,15 +163,14 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
       }
     }
     std::vector<robotio::DepthFrame> frames;
-    std::vector<robotio::Pose2D> odometry;
     for (std::size_t k : scans[s]) {
       auto frame = reader.LoadDepth(entries[order[k]]);
       if (!frame) return frame.error();
-      odometry.push_back(mapping::PoseAt(dead_reckoning, frame->stamp_ns));
       frames.push_back(std::move(*frame));
     }
     const auto start = Clock::now();
-    const mapping::SlamStep step = slam.ProcessScan(frames, odometry);
+    const ScanOutcome step = slam ? ProcessWithOdometry(*slam, dead_reckoning, frames)
+                                  : ProcessByRegistration(*tracker, frames);
     const double total = std::chrono::duration<double>(Clock::now() - start).count();
     if (options.mode == RunMode::kSimulate) sim_clock_ns += robotio::SecondsToNanos(total);
 
@@ -99,33 +184,20 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
     result.register_s.push_back(step.register_s);
     result.update_s.push_back(step.update_s);
     result.total_s.push_back(total);
-    const std::int64_t stamp = frames.front().stamp_ns;
-    SlamScanRecord record;
-    record.stamp_ns = stamp;
-    record.predicted = step.predicted;
-    record.pose = step.pose;
-    record.reference = step.registered ? step.reference : "";
-    record.accepted = step.accepted;
-    record.reference_rebuilt = step.reference_rebuilt;
-    record.fitness_rmse_m = step.registration.fitness_rmse_m;
-    record.inlier_ratio = step.registration.inlier_ratio;
-    record.iterations = step.registration.iterations;
-    const Eigen::Vector3d eigenvalues =
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(step.registration.planar_information)
-            .eigenvalues();
-    record.structure = eigenvalues(2) > 0.0 ? eigenvalues(0) / eigenvalues(2) : 0.0;
-    record.scan_points = step.scan_points;
-    result.scans.push_back(record);
-    result.trajectory.push_back(robotio::ToStampedPose(stamp, step.pose));
-    result.odometry.push_back(robotio::ToStampedPose(stamp, odometry.front()));
+    result.scans.push_back(step.record);
+    result.trajectory.push_back({step.record.stamp_ns, step.pose});
+    if (slam) result.odometry.push_back(robotio::ToStampedPose(step.record.stamp_ns, step.odometry));
     for (std::size_t k = 0; k < frames.size(); ++k) {
-      const robotio::Pose2D at_frame = step.pose.Compose(odometry.front().Between(odometry[k]));
-      result.frame_poses.push_back(robotio::ToStampedPose(frames[k].stamp_ns, at_frame));
+      result.frame_poses.push_back({frames[k].stamp_ns, step.frame_poses[k]});
     }
     if (progress) progress(static_cast<double>(s + 1) / static_cast<double>(scans.size()));
   }
   std::sort(result.frame_poses.begin(), result.frame_poses.end(),
             [](const auto& a, const auto& b) { return a.stamp_ns < b.stamp_ns; });
+  if (tracker) {
+    result.keyframes = tracker->keyframes();
+    result.track_restarts = tracker->restarts();
+  }
   return result;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamap/mapping/CameraTracker.hpp"
 #include "dynamap/mapping/MotionModel.hpp"
 #include "dynamap/mapping/SlamLoop.hpp"
 #include "dynamap/robotio/RecordingReader.hpp"
@@ -20,6 +21,7 @@ struct SlamRunOptions {
   mapping::SlamConfig slam;
   mapping::MappingConfig mapping;
   mapping::MotionModelConfig motion;
+  mapping::CameraTrackerConfig tracker;  // For recordings without odometry.
   RunMode mode = RunMode::kPlayback;
   // The recorded ground-truth path instead of wheels + gyro as odometry: what is left of
   // the error is the registration's own (and the map's feedback on it).
@@ -32,7 +34,9 @@ struct SlamScanRecord {
   std::int64_t stamp_ns = 0;
   robotio::Pose2D predicted;
   robotio::Pose2D pose;
-  std::string reference;  // "previous" or "map"; empty when nothing was registered.
+  // "previous" or "map" (or "keyframes" when tracking without odometry); empty when
+  // nothing was registered.
+  std::string reference;
   bool accepted = false;
   bool reference_rebuilt = false;
   double fitness_rmse_m = 0.0;
@@ -48,6 +52,11 @@ struct SlamRunResult {
   robotio::Trajectory trajectory;   // T_map_base at each processed scan's capture time.
   robotio::Trajectory frame_poses;  // T_map_base at each processed frame's capture time.
   robotio::Trajectory odometry;     // Odometry + gyro alone, at the same scan stamps.
+  // No odometry: the camera was tracked by registration alone (mapping::CameraTracker),
+  // in 6-DoF; `odometry` is empty and the map frame is the first scan's pose.
+  bool tracking_only = false;
+  std::size_t keyframes = 0;       // Tracking only: scans that joined the local map.
+  std::size_t track_restarts = 0;  // Tracking only: times the track was lost.
   std::size_t frames_processed = 0;
   std::size_t frames_dropped = 0;   // Simulate mode: not taken in time.
   std::size_t registrations_accepted = 0;

@@ -105,11 +105,13 @@ RecordingMeta ParseMeta(ConfigNode& root) {
 }
 
 // A TUM RGB-D sequence has no rig: one Kinect with the default intrinsics, no latency,
-// its optical frame taken as the body of a hand-held "robot".
+// carried as a level, forward-looking camera on a "base" that is its body frame (x
+// forward, y left, z up), so that maps of it are upright at the first frame.
 Rig TumRig() {
   Rig rig;
   KinectMount mount;
   mount.id = "tum";
+  mount.T_base_kinect = MountPose(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
   mount.latency_s = 0.0;
   mount.min_range_m = 0.3;
   mount.max_range_m = 8.0;

@@ -5,6 +5,8 @@
 #include <OpenNI.h>
 #include <filesystem>
 
+#include "dynamap/robotio/RecordingReader.hpp"
+#include "dynamap/robotio/hardware/OniUnpacking.hpp"
 #include "dynamap/robotio/hardware/OpenNiCamera.hpp"
 
 namespace dynamap::robotio::hardware {
@@ -132,6 +134,60 @@ TEST(OpenNiCamera, RecordingFromOpenNiRecorderOpensAsAFileDevice) {
   }
   camera.value().reset();
   std::filesystem::remove(file);
+}
+
+// The unpacking behind `dynamap map --log FILE.oni`, fed by OpenNI2's live software device
+// (its file device plays nothing back here): a recording that reads back frame by frame.
+TEST(OpenNiCamera, UnpackedFramesReadBackAsARecordingWithoutOdometry) {
+  OpenNiCameraConfig config;
+  config.device = "Dummy";
+  config.width = 320;
+  config.height = 240;
+  auto camera = OpenNiCamera::Open(config);
+  ASSERT_TRUE(camera.ok()) << camera.error().message;
+  const std::string dir = (std::filesystem::temp_directory_path() /
+                           ("dynamap_unpack_" + std::to_string(::getpid())))
+                              .string();
+  std::filesystem::remove_all(dir);
+  std::vector<double> progress;
+  auto unpacked = UnpackDepthFrames(**camera, "OpenNI2 camera Dummy", 5, config.intrinsics, dir,
+                                    "Dummy", std::chrono::milliseconds(1000),
+                                    [&](double f) { progress.push_back(f); });
+  ASSERT_TRUE(unpacked.ok()) << unpacked.error().message;
+  EXPECT_EQ(unpacked->frames, 5u);
+  EXPECT_EQ(unpacked->width, 320);
+  ASSERT_EQ(progress.size(), 5u);
+  EXPECT_DOUBLE_EQ(progress.back(), 1.0);
+  auto reader = RecordingReader::Open(dir);
+  ASSERT_TRUE(reader.ok()) << reader.error().message;
+  EXPECT_EQ(reader->meta().source, "hardware");
+  EXPECT_TRUE(reader->odometry().empty());
+  ASSERT_EQ(reader->rig().kinects.size(), 1u);
+  EXPECT_EQ(reader->rig().kinects[0].intrinsics.width, 320);
+  EXPECT_DOUBLE_EQ(reader->rig().kinects[0].intrinsics.fx, 262.5);
+  ASSERT_EQ(reader->depth_entries().size(), 5u);
+  auto frame = reader->LoadDepth(reader->depth_entries().back());
+  ASSERT_TRUE(frame.ok()) << frame.error().message;
+  EXPECT_EQ(frame->width, 320);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(OpenNiCamera, UnpackingACameraThatSendsNothingIsAnError) {
+  struct SilentCamera : DepthCameraInterface {
+    int sensor_id() const override { return 0; }
+    Expected<std::optional<DepthFrame>> Grab(std::chrono::milliseconds) override {
+      return std::optional<DepthFrame>{};
+    }
+  } silent;
+  const std::string dir = (std::filesystem::temp_directory_path() /
+                           ("dynamap_unpack_silent_" + std::to_string(::getpid())))
+                              .string();
+  auto unpacked = UnpackDepthFrames(silent, "OpenNI2 recording x.oni", 7, Intrinsics{}, dir, "x.oni",
+                                    std::chrono::milliseconds(10), nullptr);
+  ASSERT_FALSE(unpacked.ok());
+  EXPECT_EQ(unpacked.error().message,
+            "OpenNI2 recording x.oni: no depth frame within 10 ms (0 of the 7 it holds)");
+  EXPECT_FALSE(std::filesystem::exists(dir));  // Nothing half-made is left behind.
 }
 
 }  // namespace
