@@ -65,10 +65,12 @@ std::string Sentence(const std::string& message) {
   return !message.empty() && message.back() == '.' ? message : message + ".";
 }
 
-robotio::Rig LoadRigFor(const DeviceRecordOptions& options) {
+}  // namespace
+
+robotio::Rig LoadDeviceRig(const char* command, const DeviceOptions& options) {
   auto rig =
       robotio::LoadRig(options.rig.empty() ? ResourcePath("rigs/two_kinects.yaml") : options.rig);
-  if (!rig) FailCommand(kCommand, rig.error().message);
+  if (!rig) FailCommand(command, rig.error().message);
   if (options.width > 0) {
     for (auto& k : rig->kinects) {
       const int height = options.width * k.intrinsics.height / k.intrinsics.width;
@@ -78,7 +80,8 @@ robotio::Rig LoadRigFor(const DeviceRecordOptions& options) {
   return *rig;
 }
 
-hw::RecordingDevices OpenDevices(const DeviceRecordOptions& options, const robotio::Rig& rig) {
+hw::RecordingDevices OpenRobotDevices(const char* command, const DeviceOptions& options,
+                                      const robotio::Rig& rig) {
   hw::DriveDevicesConfig config;
   config.rmp.device = options.rmp_port;
   if (!options.no_imu) {
@@ -90,18 +93,18 @@ hw::RecordingDevices OpenDevices(const DeviceRecordOptions& options, const robot
   }
   config.pad.device = options.pad;
   auto devices = hw::OpenDriveDevices(config);
-  if (!devices) FailCommand(kCommand, devices.error().message);
+  if (!devices) FailCommand(command, devices.error().message);
   if (options.no_cameras) return std::move(devices).value();
 
   auto cameras = hw::CameraConfigsForRig(rig, options.cameras);
   if (!cameras) {
-    FailCommand(kCommand, Sentence(cameras.error().message) +
+    FailCommand(command, Sentence(cameras.error().message) +
                               " Give one --camera per Kinect, in rig order, or --no-cameras to "
                               "record without depth.");
   }
   auto opened = hw::OpenRecordingCameras(*cameras);
   if (!opened) {
-    FailCommand(kCommand, Sentence(opened.error().message) +
+    FailCommand(command, Sentence(opened.error().message) +
                               " To record without depth on purpose, pass --no-cameras.");
   }
   devices->cameras = std::move(opened).value();
@@ -109,7 +112,9 @@ hw::RecordingDevices OpenDevices(const DeviceRecordOptions& options, const robot
   return std::move(devices).value();
 }
 
-nlohmann::json DeviceReport(const DeviceRecordOptions& options, hw::RecordingDevices& devices,
+namespace {
+
+nlohmann::json DeviceReport(const DeviceOptions& options, hw::RecordingDevices& devices,
                             const hw::RecordingLoopResult& result) {
   const hw::RmpLinkStats rmp = devices.base->Stats();
   nlohmann::json report = {
@@ -144,47 +149,46 @@ nlohmann::json DeviceReport(const DeviceRecordOptions& options, hw::RecordingDev
 
 }  // namespace
 
-void AddDeviceRecordOptions(CLI::App& record, CLI::Option* device_flag,
-                            DeviceRecordOptions& options) {
+void AddDeviceOptions(CLI::App& command, CLI::Option* device_flag, DeviceOptions& options) {
   options.rmp_port = hw::RmpConfig{}.device;
   options.imu_port = hw::XsensImuConfig{}.device;
   options.imu_baud = hw::XsensImuConfig{}.baud;
   options.pad = hw::GamepadConfig{}.device;
   const std::string group = "Real robot (with --device)";
-  record.add_option("--rmp-port", options.rmp_port, "Segway RMP serial device")
+  command.add_option("--rmp-port", options.rmp_port, "Segway RMP serial device")
       ->capture_default_str()
       ->needs(device_flag)
       ->group(group);
-  auto* no_imu = record.add_flag("--no-imu", options.no_imu, "Record without the gyro")
+  auto* no_imu = command.add_flag("--no-imu", options.no_imu, "Without the gyro (odometry alone for heading)")
                      ->needs(device_flag)
                      ->group(group);
-  record.add_option("--imu-port", options.imu_port, "Xsens gyro serial device")
+  command.add_option("--imu-port", options.imu_port, "Xsens gyro serial device")
       ->capture_default_str()
       ->needs(device_flag)
       ->excludes(no_imu)
       ->group(group);
-  record.add_option("--imu-baud", options.imu_baud, "Xsens gyro baud rate")
+  command.add_option("--imu-baud", options.imu_baud, "Xsens gyro baud rate")
       ->capture_default_str()
       ->needs(device_flag)
       ->excludes(no_imu)
       ->group(group);
-  record
+  command
       .add_option("--imu-rpy-deg", options.imu_rpy_deg,
                   "Gyro mounting roll pitch yaw in the base frame, degrees (180 0 0: upside down)")
       ->expected(3)
       ->needs(device_flag)
       ->excludes(no_imu)
       ->group(group);
-  record.add_option("--pad", options.pad, "Gamepad joystick device")
+  command.add_option("--pad", options.pad, "Gamepad joystick device")
       ->capture_default_str()
       ->needs(device_flag)
       ->group(group);
-  auto* no_cameras = record
+  auto* no_cameras = command
                          .add_flag("--no-cameras", options.no_cameras,
-                                   "Record without depth (odometry and gyro only)")
+                                   "Without depth (odometry and gyro only; record only)")
                          ->needs(device_flag)
                          ->group(group);
-  record
+  command
       .add_option("--camera", options.cameras,
                   "Kinect for each rig entry, in rig order: an OpenNI2 URI, serial:XYZ, a .oni "
                   "file, or N for the N-th camera OpenNI2 lists (default: the only camera, "
@@ -194,10 +198,10 @@ void AddDeviceRecordOptions(CLI::App& record, CLI::Option* device_flag,
       ->group(group);
 }
 
-void RunDeviceRecord(const DeviceRecordOptions& options) {
-  const robotio::Rig rig = LoadRigFor(options);
+void RunDeviceRecord(const DeviceOptions& options) {
+  const robotio::Rig rig = LoadDeviceRig(kCommand, options);
   // Every device must answer before the recording folder is created.
-  hw::RecordingDevices devices = OpenDevices(options, rig);
+  hw::RecordingDevices devices = OpenRobotDevices(kCommand, options, rig);
 
   hw::RecordingLoopConfig loop;
   loop.duration_s = options.duration_s;

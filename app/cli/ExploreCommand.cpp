@@ -2,12 +2,16 @@
 
 #include <spdlog/spdlog.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <memory>
+#include <optional>
 #include <thread>
 
 #include "cli/CommandSupport.hpp"
+#include "cli/DeviceRecording.hpp"
 #include "cli/Interrupt.hpp"
 #include "cli/ProgressLine.hpp"
 #include "dynamap/app/runtime/MissionRuntime.hpp"
@@ -33,6 +37,9 @@ struct ExploreOptions {
   int kinect_width = 320;
   bool record = false;
   bool headless = false;
+  bool device = false;          // The real robot instead of the simulator.
+  double area_m = runtime::MissionConfig{}.area_m;
+  DeviceOptions device_options;
 };
 
 std::string TimestampedRunDir() {
@@ -47,7 +54,7 @@ const char* TargetText(const runtime::MissionSnapshot& s) {
   return planning::TargetKindName(s.target_kind);
 }
 
-void Run(const ExploreOptions& options) {
+runtime::MissionConfig ConfigFor(const ExploreOptions& options) {
   runtime::MissionConfig config;
   config.world_file = options.world;
   config.rig_file = options.rig;
@@ -59,6 +66,7 @@ void Run(const ExploreOptions& options) {
   config.kinect_width = options.kinect_width;
   config.kinect_height = options.kinect_width * 3 / 4;
   config.record = options.record;
+  config.area_m = options.area_m;
   config.poses = options.poses == "odometry"      ? runtime::PoseSource::kOdometry
                  : options.poses == "groundtruth" ? runtime::PoseSource::kGroundTruth
                                                   : runtime::PoseSource::kSlam;
@@ -74,22 +82,74 @@ void Run(const ExploreOptions& options) {
   }
   config.planning.targets.strategy = options.targets == "nearest-frontier" ? "nearest-frontier"
                                                                            : "gain";
-  auto runtime = runtime::MissionRuntime::Create(config);
+  return config;
+}
+
+// What the pad said last, for the progress line and the end of the mission.
+struct PadState {
+  std::atomic<bool> held{false};    // LB, the dead-man button.
+  std::atomic<bool> finish{false};  // Start was pressed.
+};
+
+// The real robot's devices as the mission's sensor sources.
+runtime::DeviceSources SourcesFrom(robotio::hardware::RecordingDevices& devices,
+                                   std::shared_ptr<PadState> pad_state) {
+  runtime::DeviceSources sources;
+  sources.base = devices.base.get();
+  sources.imu = devices.imu.get();
+  for (std::size_t i = 0; i < devices.cameras.size(); ++i) {
+    sources.cameras.push_back({devices.cameras[i].get(), devices.camera_names[i]});
+  }
+  robotio::hardware::GamepadTeleop* pad = &*devices.pad;
+  sources.deadman = [pad, pad_state](std::chrono::milliseconds wait) -> robotio::Expected<bool> {
+    auto state = pad->Update(wait);
+    if (!state) return state.error();
+    if (state->finish_requested) pad_state->finish = true;
+    pad_state->held = state->deadman_held;
+    return state->deadman_held;
+  };
+  return sources;
+}
+
+void Run(const ExploreOptions& options) {
+  const runtime::MissionConfig config = ConfigFor(options);
+  std::optional<robotio::hardware::RecordingDevices> devices;
+  auto pad_state = std::make_shared<PadState>();
+  robotio::Expected<std::unique_ptr<runtime::MissionRuntime>> runtime = [&] {
+    if (!options.device) return runtime::MissionRuntime::Create(config);
+    if (options.device_options.no_cameras) {
+      FailCommand("explore", "--no-cameras: a mission maps and plans with the Kinects");
+    }
+    DeviceOptions device_options = options.device_options;
+    device_options.rig = options.rig;
+    device_options.width = options.kinect_width;
+    const robotio::Rig rig = LoadDeviceRig("explore", device_options);
+    devices = OpenRobotDevices("explore", device_options, rig);
+    return runtime::MissionRuntime::CreateOnDevices(config, SourcesFrom(*devices, pad_state));
+  }();
   if (!runtime) FailCommand("explore", runtime.error().message);
 
-  spdlog::info("exploring {} (seed {}, poses {}, {}), results in {}", config.world_file,
-               config.seed, options.poses,
-               config.speed > 0 ? std::to_string(config.speed) + "x real time"
-                                : std::string("as fast as the machine allows"),
-               config.out_dir);
+  if (options.device) {
+    spdlog::info("exploring with the robot (poses {}), results in {}: the base moves only "
+                 "while LB is held; Start on the pad or Ctrl-C ends the mission",
+                 options.poses, config.out_dir);
+  } else {
+    spdlog::info("exploring {} (seed {}, poses {}, {}), results in {}", config.world_file,
+                 config.seed, options.poses,
+                 config.speed > 0 ? std::to_string(config.speed) + "x real time"
+                                  : std::string("as fast as the machine allows"),
+                 config.out_dir);
+  }
   const auto wall_start = std::chrono::steady_clock::now();
   const InterruptGuard interrupt;
   (*runtime)->Start();
   ProgressLine progress("exploring");
   while (!(*runtime)->finished()) {
-    if (InterruptGuard::requested()) {
-      spdlog::info("interrupted: stopping the mission and saving its results "
-                   "(interrupt again to quit without them)");
+    const bool finish = pad_state->finish;
+    if (InterruptGuard::requested() || finish) {
+      spdlog::info("{}: stopping the mission and saving its results{}",
+                   finish ? "Start pressed" : "interrupted",
+                   finish ? "" : " (interrupt again to quit without them)");
       (*runtime)->Stop();
       break;
     }
@@ -102,17 +162,34 @@ void Run(const ExploreOptions& options) {
       }
       known_m2 *= s.grid->resolution_m * s.grid->resolution_m;
     }
-    char detail[240];
+    char detail[260];
     std::snprintf(detail, sizeof(detail),
-                  "t %6.1f s  known floor %6.1f m2  driven %6.1f m  v %4.2f w %5.2f  stops %lld  %s",
+                  "t %6.1f s  known floor %6.1f m2  driven %6.1f m  v %4.2f w %5.2f  stops %lld  %s%s",
                   s.sim_time_s, known_m2, s.distance_m, s.command.v, s.command.omega,
-                  static_cast<long long>(s.guard_stops), TargetText(s));
+                  static_cast<long long>(s.guard_stops), TargetText(s),
+                  options.device && !pad_state->held ? "  (LB released: base held)" : "");
     progress.Update(s.sim_time_s / config.max_time_s, detail);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }
   (*runtime)->Wait();
   auto report = (*runtime)->Finish();
   if (!report) FailCommand("explore", report.error().message);
+  if (options.device) {
+    char summary[300];
+    std::snprintf(summary, sizeof(summary),
+                  "%s after %.0f s: driven %.1f m (estimated), %lld frames mapped, %lld guard stops",
+                  report->completed ? "complete" : "stopped", report->mission_time_s,
+                  report->path_length_m, static_cast<long long>(report->frames_processed),
+                  static_cast<long long>(report->guard_stops));
+    progress.Finish(summary);
+    std::printf("results: %s (report.json, map2d.png, map.ot, static.bt, dynamic.bt, ...)\n",
+                config.out_dir.c_str());
+    if (const auto error = (*runtime)->device_error()) {
+      FailCommand("explore", *error + "; the base was stopped, and the maps so far are saved in " +
+                                 config.out_dir);
+    }
+    return;
+  }
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   char summary[400];
@@ -133,9 +210,15 @@ void Run(const ExploreOptions& options) {
 void RegisterExploreCommand(CLI::App& app) {
   auto options = std::make_shared<ExploreOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "explore", "Explore a simulated world autonomously: SLAM, dual static/dynamic map, "
-                 "target planning, D* Lite, collision guard; writes maps and report.json");
-  cmd->add_option("--world", options->world, "World file")->check(CLI::ExistingFile);
+      "explore", "Explore autonomously, a simulated world or with the real robot (--device): "
+                 "SLAM, dual static/dynamic map, target planning, D* Lite, collision guard; "
+                 "writes maps and report.json");
+  auto* world = cmd->add_option("--world", options->world, "World file")->check(CLI::ExistingFile);
+  auto* device = cmd->add_flag(
+      "--device", options->device,
+      "Explore with the real robot (Segway RMP, Xsens gyro, Kinects) instead of the simulator, "
+      "in real time; the base moves only while the pad's LB is held (docs/HARDWARE.md)");
+  world->excludes(device);
   cmd->add_option("--rig", options->rig, "Kinect rig file")->check(CLI::ExistingFile);
   cmd->add_option("--robot", options->robot, "Robot file")->check(CLI::ExistingFile);
   cmd->add_option("--planning", options->planning,
@@ -147,13 +230,14 @@ void RegisterExploreCommand(CLI::App& app) {
                   "as for dynamap map --slam")
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", options->out, "Output folder (default: a new runs/explore-* folder)");
-  cmd->add_option("--seed", options->seed, "Simulator seed");
-  cmd->add_option("--max-time", options->max_time_s, "Simulated seconds before the mission ends")
+  cmd->add_option("--seed", options->seed, "Simulator seed")->excludes(device);
+  cmd->add_option("--max-time", options->max_time_s, "Seconds of mission time (simulated, or real with --device) before the mission ends")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--speed", options->speed,
                   "Simulated seconds per wall second; 0 = as fast as the machine allows "
                   "without dropping frames")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->excludes(device);
   cmd->add_option("--targets", options->targets, "Target planner")
       ->check(CLI::IsMember({"default", "nearest-frontier"}));
   cmd->add_option("--poses", options->poses, "Where frames are placed from")
@@ -165,6 +249,12 @@ void RegisterExploreCommand(CLI::App& app) {
   cmd->add_flag("--headless", options->headless,
                 "Run without a window (explore always runs in the terminal; the GUI has its "
                 "own Mission workspace)");
+  AddDeviceOptions(*cmd, device, options->device_options);
+  cmd->add_option("--area", options->area_m,
+                  "With --device: side of the square area around the start that the 2D map "
+                  "covers, m")
+      ->check(CLI::Range(2.0, 500.0))
+      ->needs(device);
   cmd->callback([options] { Run(*options); });
 }
 

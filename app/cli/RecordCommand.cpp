@@ -36,7 +36,7 @@ struct RecordOptions {
   std::uint64_t seed = 1;
   int width = 0;            // 0: the rig's resolution.
   bool device = false;      // Record the real robot instead of the simulator.
-  DeviceRecordOptions device_options;
+  DeviceOptions device_options;
 };
 
 // Writes simulator output on its own thread so PNG encoding overlaps the rendering.
@@ -237,10 +237,10 @@ void RegisterRecordCommand(CLI::App& app) {
   record->add_option("--width", options->width, "Depth image width in px (height follows; default: the rig's)")
       ->check(CLI::Range(16, 4096));
   record->add_option("--out", options->out, "New recording folder")->required();
-  AddDeviceRecordOptions(*record, device, options->device_options);
+  AddDeviceOptions(*record, device, options->device_options);
   record->callback([options] {
     if (options->device) {
-      DeviceRecordOptions device_options = options->device_options;
+      DeviceOptions device_options = options->device_options;
       device_options.rig = options->rig;
       device_options.out = options->out;
       device_options.duration_s = options->duration_s;

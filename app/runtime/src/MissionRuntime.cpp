@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
+#include <nlohmann/json.hpp>
 
 #include "dynamap/app/runtime/ControlWorker.hpp"
 #include "dynamap/app/runtime/MappingWorker.hpp"
@@ -16,6 +18,7 @@
 #include "dynamap/app/runtime/MissionEvaluation.hpp"
 #include "dynamap/app/runtime/MissionOutputs.hpp"
 #include "dynamap/app/runtime/PlanningWorker.hpp"
+#include "dynamap/app/runtime/DeviceDriver.hpp"
 #include "dynamap/app/runtime/SimulationDriver.hpp"
 #include "dynamap/mapping/MapExport.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
@@ -62,7 +65,7 @@ std::vector<robotio::Pose2D> ToPoses(const robotio::Trajectory& trajectory) {
 
 }  // namespace
 
-MissionRuntime::MissionRuntime(MissionConfig config, robotio::sim::World world)
+MissionRuntime::MissionRuntime(MissionConfig config, std::optional<robotio::sim::World> world)
     : config_(std::move(config)), world_(std::move(world)) {}
 
 MissionRuntime::~MissionRuntime() {
@@ -72,9 +75,8 @@ MissionRuntime::~MissionRuntime() {
   }
 }
 
-robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(MissionConfig config) {
-  auto world = robotio::sim::LoadWorld(config.world_file);
-  if (!world) return world.error();
+robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Prepare(
+    MissionConfig config, std::optional<robotio::sim::World> world) {
   if (config.rig_file.empty()) {
     config.rig_file = std::string(DYNAMAP_RESOURCES_DIR) + "/rigs/two_kinects.yaml";
   }
@@ -95,9 +97,11 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(Missio
   for (robotio::KinectMount& mount : rig->kinects) {
     mount.intrinsics = mount.intrinsics.Scaled(config.kinect_width, config.kinect_height);
   }
-  world->duration_s = config.max_time_s;  // What stands at the end is static ground truth.
-  std::unique_ptr<MissionRuntime> runtime(new MissionRuntime(config, *world));
+  // What stands at the end is static ground truth.
+  if (world) world->duration_s = config.max_time_s;
+  std::unique_ptr<MissionRuntime> runtime(new MissionRuntime(config, std::move(world)));
   runtime->rig_ = *rig;
+  runtime->robot_ = *robot;
   runtime->footprint_radius_m_ = robot->footprint_radius_m;
 
   mapping::MotionModelConfig motion;
@@ -105,6 +109,7 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(Missio
   runtime->mediator_ = std::make_unique<Mediator>(config.speed, motion);
   if (config.record) {
     robotio::RecordingMeta meta;
+    meta.source = runtime->world_ ? "simulator" : "hardware";
     meta.world = config.world_file;
     meta.seed = config.seed;
     meta.duration_s = config.max_time_s;
@@ -112,34 +117,83 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(Missio
     if (!writer) return writer.error();
     runtime->recording_ = std::move(*writer);
   }
-  robotio::sim::SimulatorConfig sim_config;
-  sim_config.seed = config.seed;
-  auto simulator = std::make_unique<robotio::sim::Simulator>(*world, *robot, *rig, sim_config);
+  return runtime;
+}
 
+robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(MissionConfig config) {
+  auto world = robotio::sim::LoadWorld(config.world_file);
+  if (!world) return world.error();
+  auto prepared = Prepare(std::move(config), std::move(*world));
+  if (!prepared) return prepared.error();
+  std::unique_ptr<MissionRuntime> runtime = std::move(*prepared);
+  const MissionConfig& c = runtime->config_;
+  robotio::sim::SimulatorConfig sim_config;
+  sim_config.seed = c.seed;
+  auto simulator = std::make_unique<robotio::sim::Simulator>(*runtime->world_, runtime->robot_,
+                                                             runtime->rig_, sim_config);
   SimulationDriverConfig driver;
-  driver.max_time_s = config.max_time_s;
-  driver.control_period_s = 1.0 / config.control_rate_hz;
-  driver.replan_period_s = config.planning.replan_period_s;
+  driver.max_time_s = c.max_time_s;
+  driver.control_period_s = 1.0 / c.control_rate_hz;
+  driver.replan_period_s = c.planning.replan_period_s;
   runtime->driver_ = std::make_unique<SimulationDriver>(std::move(simulator), *runtime->mediator_,
                                                         driver, runtime->recording_.get());
+  runtime->MakeWorkers(AreaFor(*runtime->world_, c.mapping.resolution_m));
+  return runtime;
+}
 
+robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::CreateOnDevices(
+    MissionConfig config, DeviceSources sources) {
+  if (sources.base == nullptr || !sources.deadman) {
+    return robotio::Error{"a mission on the robot needs the base and the dead-man switch"};
+  }
+  if (config.poses == PoseSource::kGroundTruth) {
+    return robotio::Error{"poses: the real robot has no ground truth; use slam or odometry"};
+  }
+  config.world_file.clear();
+  config.speed = 1.0;  // Real time: the clock follows the host's.
+  auto prepared = Prepare(std::move(config), std::nullopt);
+  if (!prepared) return prepared.error();
+  std::unique_ptr<MissionRuntime> runtime = std::move(*prepared);
+  const MissionConfig& c = runtime->config_;
+  for (const DeviceCamera& camera : sources.cameras) {
+    if (camera.camera == nullptr ||
+        camera.camera->sensor_id() >= static_cast<int>(runtime->rig_.kinects.size())) {
+      return robotio::Error{camera.name + ": not a Kinect of the rig " + c.rig_file};
+    }
+  }
+  DeviceDriverConfig driver;
+  driver.max_time_s = c.max_time_s;
+  runtime->driver_ = std::make_unique<DeviceDriver>(std::move(sources), *runtime->mediator_,
+                                                    driver, runtime->recording_.get());
+  // The map frame is the start pose: the area is centred on it.
+  planning::GridMap area(static_cast<int>(std::ceil(c.area_m / c.mapping.resolution_m)),
+                         static_cast<int>(std::ceil(c.area_m / c.mapping.resolution_m)),
+                         c.mapping.resolution_m);
+  area.origin_x_m = -0.5 * c.area_m;
+  area.origin_y_m = -0.5 * c.area_m;
+  runtime->MakeWorkers(area);
+  return runtime;
+}
+
+void MissionRuntime::MakeWorkers(const planning::GridMap& area) {
+  const MissionConfig& config = config_;
   MappingWorkerConfig mapping;
   mapping.poses = config.poses;
   mapping.mapping = config.mapping;
   mapping.slam = config.slam;
   mapping.projection = config.planning.projection;
-  mapping.area = AreaFor(*world, config.mapping.resolution_m);
+  mapping.area = area;
   mapping.save_file = config.out_dir + "/map.ot";
   mapping.save_period_s = config.save_period_s;
   mapping.inspection_distance_m = config.planning.coverage.inspection_distance_m;
-  runtime->mapping_ = std::make_unique<MappingWorker>(*runtime->mediator_, *rig, mapping);
+  mapping_ = std::make_unique<MappingWorker>(*mediator_, rig_, mapping);
 
   PlanningWorkerConfig planning;
   planning.planning = config.planning;
   planning.known_floor_radius_m = config.known_floor_radius_m;
   // The ring the Kinects cannot see, plus the widest floor gap the planner closes anyway.
   const double blind_m =
-      robotio::FloorBlindRadius(*rig) + config.planning.projection.max_floor_gap_m;
+      robotio::FloorBlindRadius(rig_) + config.planning.projection.max_floor_gap_m;
   planning.start_floor_radius_m = std::max(config.known_floor_radius_m, blind_m);
   spdlog::debug("floor assumed within {:.2f} m of the start", planning.start_floor_radius_m);
   // Frontier viewpoints beyond the blind ring, so the unseen floor there comes into view;
@@ -148,15 +202,18 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(Missio
     planning.planning.targets.min_view_distance_m = blind_m;
   }
   planning.resolution_m = config.mapping.resolution_m;
-  runtime->planning_ = std::make_unique<PlanningWorker>(*runtime->mediator_, planning);
+  planning_ = std::make_unique<PlanningWorker>(*mediator_, planning);
 
   ControlWorkerConfig control;
   control.rate_hz = config.control_rate_hz;
   control.follower = config.planning.follower;
   control.guard = config.planning.guard;
   control.cost = config.planning.cost;
-  runtime->control_ = std::make_unique<ControlWorker>(*runtime->mediator_, *rig, control);
-  return runtime;
+  control_ = std::make_unique<ControlWorker>(*mediator_, rig_, control);
+}
+
+std::optional<std::string> MissionRuntime::device_error() const {
+  return driver_ ? driver_->device_error() : std::nullopt;
 }
 
 void MissionRuntime::Start() {
@@ -280,30 +337,38 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
 
   const robotio::Trajectory truth = m.GroundTruth();
   const robotio::Trajectory estimate = m.Estimates();
-  for (std::size_t i = 1; i < truth.size(); ++i) {
-    r.path_length_m += (truth[i].pose.translation() - truth[i - 1].pose.translation()).norm();
+  // On the robot nothing is known to score against: those figures stay empty (null).
+  constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+  const robotio::Trajectory& driven = world_ ? truth : estimate;
+  for (std::size_t i = 1; i < driven.size(); ++i) {
+    r.path_length_m += (driven[i].pose.translation() - driven[i - 1].pose.translation()).norm();
   }
+  r.ate_rmse_m = r.odometry_ate_rmse_m = kUnknown;
   mapping::TrajectoryEvaluationConfig ate;
   ate.max_stamp_difference_s = 0.011;  // Ground truth comes at the gyro's 100 Hz.
   if (auto e = mapping::EvaluateTrajectory(truth, estimate, ate)) r.ate_rmse_m = e->ate_m.rmse;
   if (auto e = mapping::EvaluateTrajectory(truth, m.OdometryEstimates(), ate)) {
     r.odometry_ate_rmse_m = e->ate_m.rmse;
   }
-  const mapping::PointAccuracy accuracy = mapping_->Accuracy();
-  r.static_accuracy = accuracy.static_accuracy;
-  r.dynamic_accuracy = accuracy.dynamic_accuracy;
-  r.associated_accuracy = accuracy.associated_accuracy;
-
-  const TruthGrid truth_grid =
-      BuildTruthGrid(world_, mapping_->grid(), footprint_radius_m_,
-                     config_.planning.projection.robot_height_m, r.mission_time_s);
-  r.explored_free_fraction = ExploredFreeFraction(truth_grid, mapping_->grid());
-  const robotio::PointList samples =
-      robotio::sim::SampleStaticSurfaces(world_, config_.mapping.resolution_m);
-  r.surface_coverage = SurfaceCoverage(
-      truth_grid, samples, config_.planning.projection.robot_height_m,
-      config_.planning.coverage.inspection_distance_m,
-      [this](const Eigen::Vector3f& p) { return mapping_->Inspected(p); });
+  if (world_) {
+    const mapping::PointAccuracy accuracy = mapping_->Accuracy();
+    r.static_accuracy = accuracy.static_accuracy;
+    r.dynamic_accuracy = accuracy.dynamic_accuracy;
+    r.associated_accuracy = accuracy.associated_accuracy;
+    const TruthGrid truth_grid =
+        BuildTruthGrid(*world_, mapping_->grid(), footprint_radius_m_,
+                       config_.planning.projection.robot_height_m, r.mission_time_s);
+    r.explored_free_fraction = ExploredFreeFraction(truth_grid, mapping_->grid());
+    const robotio::PointList samples =
+        robotio::sim::SampleStaticSurfaces(*world_, config_.mapping.resolution_m);
+    r.surface_coverage = SurfaceCoverage(
+        truth_grid, samples, config_.planning.projection.robot_height_m,
+        config_.planning.coverage.inspection_distance_m,
+        [this](const Eigen::Vector3f& p) { return mapping_->Inspected(p); });
+  } else {
+    r.static_accuracy = r.dynamic_accuracy = r.associated_accuracy = kUnknown;
+    r.explored_free_fraction = r.surface_coverage = kUnknown;
+  }
 
   const auto write = [&](const std::string& name, robotio::Status status) -> robotio::Status {
     if (!status) return status;
@@ -318,7 +383,8 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
             mapping::ExportBinary(tree, mapping::MapChannel::kDynamic, out + "/dynamic.bt")),
       write("map3d_topdown.png", mapping::WriteTopDownPng(tree, out + "/map3d_topdown.png")),
       write("trajectory.tum", robotio::WriteTumTrajectory(estimate, out + "/trajectory.tum")),
-      write("groundtruth.tum", robotio::WriteTumTrajectory(truth, out + "/groundtruth.tum")),
+      world_ ? write("groundtruth.tum", robotio::WriteTumTrajectory(truth, out + "/groundtruth.tum"))
+             : robotio::Status(robotio::Ok{}),
       write("map2d.png", WriteMapPicture(mapping_->grid(), ToPoses(estimate), ToPoses(truth),
                                          Snapshot().candidates, out + "/map2d.png")),
       write("map2d.pgm", WriteRosMap(mapping_->grid(), out + "/map2d.pgm", out + "/map2d.yaml")),
@@ -329,14 +395,21 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
     if (!status) return status.error();
   }
   r.files.push_back("report.json");
-  char extra[512];
-  std::snprintf(extra, sizeof(extra),
-                R"({"world": "%s", "seed": %llu, "poses": "%s", "speed": %g, "kinect_width": %d,
-                    "kinect_height": %d, "targets": "%s"})",
-                config_.world_file.c_str(), static_cast<unsigned long long>(config_.seed),
-                ToString(config_.poses), config_.speed, config_.kinect_width,
-                config_.kinect_height, config_.planning.targets.strategy.c_str());
-  if (auto status = WriteReportJson(r, extra, out + "/report.json"); !status) {
+  nlohmann::json extra = {{"source", world_ ? "simulator" : "hardware"},
+                          {"poses", ToString(config_.poses)},
+                          {"speed", config_.speed},
+                          {"kinect_width", config_.kinect_width},
+                          {"kinect_height", config_.kinect_height},
+                          {"targets", config_.planning.targets.strategy}};
+  if (world_) {
+    extra["world"] = config_.world_file;
+    extra["seed"] = config_.seed;
+  } else {
+    extra["collisions"] = nullptr;  // The robot has no contact sensing.
+    extra["device_error"] =
+        device_error() ? nlohmann::json(*device_error()) : nlohmann::json(nullptr);
+  }
+  if (auto status = WriteReportJson(r, extra.dump(), out + "/report.json"); !status) {
     return status.error();
   }
   return r;

@@ -15,7 +15,8 @@ namespace dynamap::app::runtime {
 enum class PoseSource { kSlam, kOdometry, kGroundTruth };
 
 struct MissionConfig {
-  std::string world_file;            // Simulated world (resources/worlds/*.yaml).
+  std::string world_file;            // Simulated world (resources/worlds/*.yaml); empty
+                                     // on the real robot.
   std::string rig_file;              // Kinect rig; empty = resources/rigs/two_kinects.yaml.
   std::string robot_file;            // Empty = resources/robots/segway_rmp50.yaml.
   std::string out_dir;               // Results folder (created).
@@ -32,6 +33,9 @@ struct MissionConfig {
   double control_rate_hz = 20.0;     // Hz of simulated time, collision guard + path follower.
   double known_floor_radius_m = 0.8; // m around visited poses where unseen floor counts as
                                      // navigable (the Kinects cannot see it that close).
+  // On the real robot (no world file): side of the square area around the start that the
+  // 2D map covers.
+  double area_m = 40.0;
   mapping::MappingConfig mapping;
   mapping::SlamConfig slam;
   planning::PlanningConfig planning;

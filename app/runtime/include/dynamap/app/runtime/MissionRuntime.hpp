@@ -1,28 +1,33 @@
-// One autonomous exploration mission in the simulator (thesis 2.2): the mediator and its
-// four threads — sensors (simulator), SLAM + mapping, planning, control. Start, pause,
-// resume, stop; snapshots for front ends at any time; on the end, every result saved.
+// One autonomous exploration mission (thesis 2.2): the mediator and its four threads —
+// sensors (the simulator or the real robot's devices), SLAM + mapping, planning, control.
+// Start, pause, resume, stop; snapshots for front ends at any time; on the end, every
+// result saved.
 #pragma once
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
 #include <vector>
 
 #include "dynamap/app/runtime/CpuTime.hpp"
+#include "dynamap/app/runtime/DeviceDriver.hpp"
 #include "dynamap/app/runtime/MissionConfig.hpp"
 #include "dynamap/app/runtime/MissionSnapshot.hpp"
 #include "dynamap/mapping/DualOcTree.hpp"
+#include "dynamap/planning/GridMap.hpp"
 #include "dynamap/robotio/Expected.hpp"
 #include "dynamap/robotio/RecordingWriter.hpp"
 #include "dynamap/robotio/Rig.hpp"
+#include "dynamap/robotio/sim/RobotConfig.hpp"
 #include "dynamap/robotio/sim/World.hpp"
 
 namespace dynamap::app::runtime {
 
 class Mediator;
-class SimulationDriver;
+class SensorDriver;
 class MappingWorker;
 class PlanningWorker;
 class ControlWorker;
@@ -32,6 +37,11 @@ class MissionRuntime {
   // Loads world, rig and robot files; errors name the file and key, before anything runs.
   [[nodiscard]] static robotio::Expected<std::unique_ptr<MissionRuntime>> Create(
       MissionConfig config);
+  // The same on the real robot: `sources` are opened devices (borrowed; they must outlive
+  // the runtime). No world file; the mission runs in real time (speed 1), poses from SLAM
+  // or odometry, and the base moves only while the dead-man switch is held.
+  [[nodiscard]] static robotio::Expected<std::unique_ptr<MissionRuntime>> CreateOnDevices(
+      MissionConfig config, DeviceSources sources);
   ~MissionRuntime();
   MissionRuntime(const MissionRuntime&) = delete;
   MissionRuntime& operator=(const MissionRuntime&) = delete;
@@ -59,19 +69,27 @@ class MissionRuntime {
   [[nodiscard]] robotio::Expected<MissionReport> Finish();
 
   [[nodiscard]] const MissionConfig& config() const { return config_; }
-  [[nodiscard]] const robotio::sim::World& world() const { return world_; }
+  // The simulated world; null on the real robot.
+  [[nodiscard]] const robotio::sim::World* world() const { return world_ ? &*world_ : nullptr; }
+  // The device failure that ended a mission on the robot; nullopt otherwise.
+  [[nodiscard]] std::optional<std::string> device_error() const;
 
  private:
-  MissionRuntime(MissionConfig config, robotio::sim::World world);
+  MissionRuntime(MissionConfig config, std::optional<robotio::sim::World> world);
+  // Rig, robot and settings checked, mediator and recording made; no driver or workers.
+  [[nodiscard]] static robotio::Expected<std::unique_ptr<MissionRuntime>> Prepare(
+      MissionConfig config, std::optional<robotio::sim::World> world);
+  void MakeWorkers(const planning::GridMap& area);
   void Monitor();
 
   MissionConfig config_;
-  robotio::sim::World world_;
+  std::optional<robotio::sim::World> world_;
   robotio::Rig rig_;
+  robotio::sim::RobotConfig robot_;
   double footprint_radius_m_ = 0.36;
   std::unique_ptr<Mediator> mediator_;
   std::unique_ptr<robotio::RecordingWriter> recording_;
-  std::unique_ptr<SimulationDriver> driver_;
+  std::unique_ptr<SensorDriver> driver_;
   std::unique_ptr<MappingWorker> mapping_;
   std::unique_ptr<PlanningWorker> planning_;
   std::unique_ptr<ControlWorker> control_;

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "dynamap/app/runtime/Mediator.hpp"
+#include "dynamap/app/runtime/SensorDriver.hpp"
 #include "dynamap/robotio/RecordingWriter.hpp"
 #include "dynamap/robotio/sim/Simulator.hpp"
 
@@ -19,17 +20,17 @@ struct SimulationDriverConfig {
   double replan_period_s = 0.5;   // s, lockstep: planning must have run this recently.
 };
 
-class SimulationDriver {
+class SimulationDriver final : public SensorDriver {
  public:
   SimulationDriver(std::unique_ptr<robotio::sim::Simulator> simulator, Mediator& mediator,
                    SimulationDriverConfig config, robotio::RecordingWriter* recording);
 
   // Thread body: runs until the mission stops or reaches max_time_s.
-  void Run();
+  void Run() override;
 
   [[nodiscard]] const robotio::sim::Simulator& simulator() const { return *simulator_; }
-  [[nodiscard]] bool reached_time_limit() const { return reached_time_limit_; }
-  [[nodiscard]] int recording_errors() const { return recording_errors_; }
+  [[nodiscard]] bool reached_time_limit() const override { return reached_time_limit_; }
+  [[nodiscard]] int recording_errors() const override { return recording_errors_; }
 
  private:
   void Publish(robotio::sim::SimOutput& out);
