@@ -38,6 +38,8 @@ struct ExploreOptions {
   bool record = false;
   bool headless = false;
   bool device = false;          // The real robot instead of the simulator.
+  std::string replay;           // A recording replayed through the mission instead.
+  bool rig_given = false;       // --rig was on the command line.
   double area_m = runtime::MissionConfig{}.area_m;
   DeviceOptions device_options;
 };
@@ -116,6 +118,11 @@ void Run(const ExploreOptions& options) {
   std::optional<robotio::hardware::RecordingDevices> devices;
   auto pad_state = std::make_shared<PadState>();
   robotio::Expected<std::unique_ptr<runtime::MissionRuntime>> runtime = [&] {
+    if (!options.replay.empty()) {
+      runtime::MissionConfig replay = config;
+      replay.rig_file = options.rig_given ? options.rig : std::string();
+      return runtime::MissionRuntime::CreateFromRecording(replay, options.replay);
+    }
     if (!options.device) return runtime::MissionRuntime::Create(config);
     if (options.device_options.no_cameras) {
       FailCommand("explore", "--no-cameras: a mission maps and plans with the Kinects");
@@ -134,7 +141,8 @@ void Run(const ExploreOptions& options) {
                  "while LB is held; Start on the pad or Ctrl-C ends the mission",
                  options.poses, config.out_dir);
   } else {
-    spdlog::info("exploring {} (seed {}, poses {}, {}), results in {}", config.world_file,
+    spdlog::info("exploring {} (seed {}, poses {}, {}), results in {}",
+                 options.replay.empty() ? config.world_file : "the recording " + options.replay,
                  config.seed, options.poses,
                  config.speed > 0 ? std::to_string(config.speed) + "x real time"
                                   : std::string("as fast as the machine allows"),
@@ -168,7 +176,7 @@ void Run(const ExploreOptions& options) {
                   s.sim_time_s, known_m2, s.distance_m, s.command.v, s.command.omega,
                   static_cast<long long>(s.guard_stops), TargetText(s),
                   options.device && !pad_state->held ? "  (LB released: base held)" : "");
-    progress.Update(s.sim_time_s / config.max_time_s, detail);
+    progress.Update(s.sim_time_s / (*runtime)->config().max_time_s, detail);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }
   (*runtime)->Wait();
@@ -219,7 +227,18 @@ void RegisterExploreCommand(CLI::App& app) {
       "Explore with the real robot (Segway RMP, Xsens gyro, Kinects) instead of the simulator, "
       "in real time; the base moves only while the pad's LB is held (docs/HARDWARE.md)");
   world->excludes(device);
-  cmd->add_option("--rig", options->rig, "Kinect rig file")->check(CLI::ExistingFile);
+  auto* replay = cmd->add_option("--replay", options->replay,
+                                 "Replay a recording through the mission (SLAM, maps, planning; "
+                                 "the robot is not steered) instead of simulating; scored "
+                                 "against its world and ground truth when it was simulated")
+                     ->check(CLI::ExistingDirectory)
+                     ->excludes(world)
+                     ->excludes(device);
+  cmd->add_option("--rig", options->rig,
+                  "Kinect rig file (with --replay: its poses and latencies replace the recorded "
+                  "ones)")
+      ->check(CLI::ExistingFile)
+      ->each([options](const std::string&) { options->rig_given = true; });
   cmd->add_option("--robot", options->robot, "Robot file")->check(CLI::ExistingFile);
   cmd->add_option("--planning", options->planning,
                   "Planning settings (YAML, the keys of planning::PlanningConfig) over the "
@@ -230,7 +249,7 @@ void RegisterExploreCommand(CLI::App& app) {
                   "as for dynamap map --slam")
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", options->out, "Output folder (default: a new runs/explore-* folder)");
-  cmd->add_option("--seed", options->seed, "Simulator seed")->excludes(device);
+  cmd->add_option("--seed", options->seed, "Simulator seed")->excludes(device)->excludes(replay);
   cmd->add_option("--max-time", options->max_time_s, "Seconds of mission time (simulated, or real with --device) before the mission ends")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--speed", options->speed,
@@ -245,7 +264,8 @@ void RegisterExploreCommand(CLI::App& app) {
   cmd->add_option("--kinect-width", options->kinect_width,
                   "Simulated Kinect image width in px (height = 3/4 of it; 640 = full Kinect)")
       ->check(CLI::Range(80, 640));
-  cmd->add_flag("--record", options->record, "Also write the run as a recording (recording/)");
+  cmd->add_flag("--record", options->record, "Also write the run as a recording (recording/)")
+      ->excludes(replay);
   cmd->add_flag("--headless", options->headless,
                 "Run without a window (explore always runs in the terminal; the GUI has its "
                 "own Mission workspace)");

@@ -1,5 +1,6 @@
 #include "dynamap/app/runtime/Mediator.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dynamap::app::runtime {
@@ -32,9 +33,34 @@ std::vector<Eigen::Vector2d> Mediator::TakeObstacles() {
   return out;
 }
 
+namespace {
+
+// The true position at `stamp_ns`, interpolated between the poses around it; nullopt
+// outside the truth recorded so far.
+std::optional<Eigen::Vector3d> TruePositionAt(const robotio::Trajectory& truth,
+                                              std::int64_t stamp_ns) {
+  const auto after = std::lower_bound(
+      truth.begin(), truth.end(), stamp_ns,
+      [](const robotio::StampedPose& p, std::int64_t stamp) { return p.stamp_ns < stamp; });
+  if (after == truth.end() || (after == truth.begin() && after->stamp_ns != stamp_ns)) {
+    return std::nullopt;
+  }
+  if (after->stamp_ns == stamp_ns) return after->pose.translation();
+  const auto before = after - 1;
+  const double w = static_cast<double>(stamp_ns - before->stamp_ns) /
+                   static_cast<double>(after->stamp_ns - before->stamp_ns);
+  return (1.0 - w) * before->pose.translation() + w * after->pose.translation();
+}
+
+}  // namespace
+
 void Mediator::AddEstimate(const robotio::StampedPose& pose) {
   std::lock_guard<std::mutex> lock(trajectory_mutex_);
   estimates_.push_back(pose);
+  if (const auto truth = TruePositionAt(ground_truth_, pose.stamp_ns)) {
+    live_squared_error_ += (pose.pose.translation() - *truth).squaredNorm();
+    ++live_error_count_;
+  }
   const robotio::Pose2D p = robotio::Pose2D::FromIsometry(pose.pose);
   if (trail_.empty() || std::hypot(p.x - trail_.back().x, p.y - trail_.back().y) > kTrailSpacingM) {
     trail_.push_back(p);
@@ -59,6 +85,12 @@ void Mediator::AddGroundTruth(const std::vector<robotio::StampedPose>& poses) {
 robotio::Trajectory Mediator::Estimates() const {
   std::lock_guard<std::mutex> lock(trajectory_mutex_);
   return estimates_;
+}
+
+std::optional<double> Mediator::LiveAte() const {
+  std::lock_guard<std::mutex> lock(trajectory_mutex_);
+  if (live_error_count_ == 0) return std::nullopt;
+  return std::sqrt(live_squared_error_ / static_cast<double>(live_error_count_));
 }
 
 robotio::Trajectory Mediator::GroundTruth() const {

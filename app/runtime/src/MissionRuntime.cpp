@@ -19,6 +19,7 @@
 #include "dynamap/app/runtime/MissionOutputs.hpp"
 #include "dynamap/app/runtime/PlanningWorker.hpp"
 #include "dynamap/app/runtime/DeviceDriver.hpp"
+#include "dynamap/app/runtime/RecordingDriver.hpp"
 #include "dynamap/app/runtime/SimulationDriver.hpp"
 #include "dynamap/mapping/MapExport.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
@@ -57,6 +58,15 @@ planning::GridMap AreaFor(const robotio::sim::World& world, double resolution_m)
   return area;
 }
 
+// Without a world: a square of side `side_m` centred on the start (the map frame's origin).
+planning::GridMap SquareArea(double side_m, double resolution_m) {
+  const int cells = static_cast<int>(std::ceil(side_m / resolution_m));
+  planning::GridMap area(cells, cells, resolution_m);
+  area.origin_x_m = -0.5 * side_m;
+  area.origin_y_m = -0.5 * side_m;
+  return area;
+}
+
 std::vector<robotio::Pose2D> ToPoses(const robotio::Trajectory& trajectory) {
   std::vector<robotio::Pose2D> poses;
   for (const auto& p : trajectory) poses.push_back(robotio::Pose2D::FromIsometry(p.pose));
@@ -76,14 +86,16 @@ MissionRuntime::~MissionRuntime() {
 }
 
 robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Prepare(
-    MissionConfig config, std::optional<robotio::sim::World> world) {
-  if (config.rig_file.empty()) {
+    MissionConfig config, std::optional<robotio::sim::World> world,
+    std::optional<robotio::Rig> recorded_rig) {
+  if (config.rig_file.empty() && !recorded_rig) {
     config.rig_file = std::string(DYNAMAP_RESOURCES_DIR) + "/rigs/two_kinects.yaml";
   }
   if (config.robot_file.empty()) {
     config.robot_file = std::string(DYNAMAP_RESOURCES_DIR) + "/robots/segway_rmp50.yaml";
   }
-  auto rig = robotio::LoadRig(config.rig_file);
+  robotio::Expected<robotio::Rig> rig =
+      recorded_rig ? robotio::Expected<robotio::Rig>(*recorded_rig) : robotio::LoadRig(config.rig_file);
   if (!rig) return rig.error();
   auto robot = robotio::sim::LoadRobotConfig(config.robot_file);
   if (!robot) return robot.error();
@@ -94,8 +106,13 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Prepare(
   fs::create_directories(config.out_dir, ec);
   if (ec) return robotio::Error{config.out_dir + ": cannot create the output folder"};
 
-  for (robotio::KinectMount& mount : rig->kinects) {
-    mount.intrinsics = mount.intrinsics.Scaled(config.kinect_width, config.kinect_height);
+  if (recorded_rig) {  // The images are as recorded.
+    config.kinect_width = rig->kinects.empty() ? 0 : rig->kinects[0].intrinsics.width;
+    config.kinect_height = rig->kinects.empty() ? 0 : rig->kinects[0].intrinsics.height;
+  } else {
+    for (robotio::KinectMount& mount : rig->kinects) {
+      mount.intrinsics = mount.intrinsics.Scaled(config.kinect_width, config.kinect_height);
+    }
   }
   // What stands at the end is static ground truth.
   if (world) world->duration_s = config.max_time_s;
@@ -123,7 +140,7 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Prepare(
 robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(MissionConfig config) {
   auto world = robotio::sim::LoadWorld(config.world_file);
   if (!world) return world.error();
-  auto prepared = Prepare(std::move(config), std::move(*world));
+  auto prepared = Prepare(std::move(config), std::move(*world), std::nullopt);
   if (!prepared) return prepared.error();
   std::unique_ptr<MissionRuntime> runtime = std::move(*prepared);
   const MissionConfig& c = runtime->config_;
@@ -151,7 +168,7 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::CreateOnDevic
   }
   config.world_file.clear();
   config.speed = 1.0;  // Real time: the clock follows the host's.
-  auto prepared = Prepare(std::move(config), std::nullopt);
+  auto prepared = Prepare(std::move(config), std::nullopt, std::nullopt);
   if (!prepared) return prepared.error();
   std::unique_ptr<MissionRuntime> runtime = std::move(*prepared);
   const MissionConfig& c = runtime->config_;
@@ -165,18 +182,67 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::CreateOnDevic
   driver.max_time_s = c.max_time_s;
   runtime->driver_ = std::make_unique<DeviceDriver>(std::move(sources), *runtime->mediator_,
                                                     driver, runtime->recording_.get());
-  // The map frame is the start pose: the area is centred on it.
-  planning::GridMap area(static_cast<int>(std::ceil(c.area_m / c.mapping.resolution_m)),
-                         static_cast<int>(std::ceil(c.area_m / c.mapping.resolution_m)),
-                         c.mapping.resolution_m);
-  area.origin_x_m = -0.5 * c.area_m;
-  area.origin_y_m = -0.5 * c.area_m;
-  runtime->MakeWorkers(area);
+  runtime->MakeWorkers(SquareArea(c.area_m, c.mapping.resolution_m));
+  return runtime;
+}
+
+robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::CreateFromRecording(
+    MissionConfig config, const std::string& recording_dir) {
+  auto opened = robotio::RecordingReader::Open(recording_dir);
+  if (!opened) return opened.error();
+  auto reader = std::make_unique<robotio::RecordingReader>(std::move(*opened));
+  if (reader->depth_entries().empty()) return robotio::Error{recording_dir + ": no depth frames"};
+  if (config.poses == PoseSource::kGroundTruth && reader->ground_truth().empty()) {
+    return robotio::Error{recording_dir + ": no groundtruth.txt for poses from ground truth"};
+  }
+  if (config.poses != PoseSource::kGroundTruth && reader->odometry().empty()) {
+    return robotio::Error{recording_dir +
+                          ": no odometry.txt, which a mission's SLAM needs; map it with "
+                          "`dynamap map --log` (registration alone) instead"};
+  }
+  if (!config.rig_file.empty()) {  // A calibrated rig instead of the recorded one.
+    auto rig = robotio::LoadRig(config.rig_file);
+    if (!rig) return rig.error();
+    if (auto used = reader->UseExtrinsics(*rig, config.rig_file); !used) return used.error();
+  }
+  std::optional<robotio::sim::World> world;
+  if (!reader->meta().world.empty()) {
+    auto loaded = robotio::sim::LoadWorld(reader->meta().world);
+    if (!loaded) return loaded.error();
+    world = std::move(*loaded);
+  }
+  config.record = false;
+  RecordingDriverConfig driver;
+  driver.control_period_s = 1.0 / config.control_rate_hz;
+  driver.replan_period_s = config.planning.replan_period_s;
+  driver.max_time_s = config.max_time_s;
+  const robotio::Rig rig = reader->rig();
+  // Ground truth (doors, people) is judged at the end of what is replayed.
+  config.max_time_s =
+      std::min(config.max_time_s, robotio::NanosToSeconds(RecordedEndNanos(*reader)));
+  config.world_file = reader->meta().world;
+  auto prepared = Prepare(std::move(config), std::move(world), rig);
+  if (!prepared) return prepared.error();
+  std::unique_ptr<MissionRuntime> runtime = std::move(*prepared);
+  runtime->reader_ = std::move(reader);
+  runtime->driver_ =
+      std::make_unique<RecordingDriver>(*runtime->reader_, *runtime->mediator_, driver);
+  const MissionConfig& c = runtime->config_;
+  if (runtime->world_) {
+    runtime->MakeWorkers(AreaFor(*runtime->world_, c.mapping.resolution_m));
+  } else {
+    runtime->MakeWorkers(SquareArea(c.area_m, c.mapping.resolution_m));
+  }
   return runtime;
 }
 
 void MissionRuntime::MakeWorkers(const planning::GridMap& area) {
   const MissionConfig& config = config_;
+  if (world_) {  // What will be reachable at the end, for the live explored share.
+    live_truth_ = std::make_shared<const TruthGrid>(
+        BuildTruthGrid(*world_, area, footprint_radius_m_,
+                       config.planning.projection.robot_height_m, config.max_time_s));
+  }
   MappingWorkerConfig mapping;
   mapping.poses = config.poses;
   mapping.mapping = config.mapping;
@@ -309,6 +375,9 @@ MissionSnapshot MissionRuntime::Snapshot() const {
   s.guard_stops = m.counters.guard_stops.load();
   if (auto command = m.command.Get()) s.command = command->value;
   s.exploration_done = m.counters.exploration_done.load();
+  s.time_limit_s = config_.max_time_s;
+  s.ate_so_far_m = m.LiveAte();
+  if (live_truth_ && s.grid) s.explored_free_fraction = ExploredFreeFraction(*live_truth_, *s.grid);
   return s;
 }
 

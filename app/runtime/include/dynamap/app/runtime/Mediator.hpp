@@ -105,6 +105,9 @@ class Mediator {
   [[nodiscard]] robotio::Trajectory OdometryEstimates() const;
   [[nodiscard]] robotio::Trajectory GroundTruth() const;
   [[nodiscard]] std::vector<robotio::Pose2D> Trail() const;  // Estimated, decimated.
+  // RMS position error of the estimates so far against the ground truth at their stamps
+  // (interpolated): the ATE while the mission runs; nullopt without ground truth.
+  [[nodiscard]] std::optional<double> LiveAte() const;
 
   // Wakes every waiting worker (stop).
   void WakeAll();
@@ -116,6 +119,8 @@ class Mediator {
   robotio::Trajectory estimates_;
   robotio::Trajectory odometry_estimates_;
   robotio::Trajectory ground_truth_;
+  double live_squared_error_ = 0.0;
+  std::int64_t live_error_count_ = 0;
   std::vector<robotio::Pose2D> trail_;
 };
 

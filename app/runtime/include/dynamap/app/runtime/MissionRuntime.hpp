@@ -14,11 +14,13 @@
 
 #include "dynamap/app/runtime/CpuTime.hpp"
 #include "dynamap/app/runtime/DeviceDriver.hpp"
+#include "dynamap/app/runtime/MissionEvaluation.hpp"
 #include "dynamap/app/runtime/MissionConfig.hpp"
 #include "dynamap/app/runtime/MissionSnapshot.hpp"
 #include "dynamap/mapping/DualOcTree.hpp"
 #include "dynamap/planning/GridMap.hpp"
 #include "dynamap/robotio/Expected.hpp"
+#include "dynamap/robotio/RecordingReader.hpp"
 #include "dynamap/robotio/RecordingWriter.hpp"
 #include "dynamap/robotio/Rig.hpp"
 #include "dynamap/robotio/sim/RobotConfig.hpp"
@@ -42,6 +44,13 @@ class MissionRuntime {
   // or odometry, and the base moves only while the dead-man switch is held.
   [[nodiscard]] static robotio::Expected<std::unique_ptr<MissionRuntime>> CreateOnDevices(
       MissionConfig config, DeviceSources sources);
+  // A recording replayed through the mission (mapping, planning and the guard run; the
+  // robot cannot be steered), in recorded time: as fast as the workers go (speed 0) or
+  // paced, dropping what they cannot take. Its rig, with `config.rig_file`'s extrinsics
+  // when given; its world (for scoring) when it was simulated; it needs odometry (or
+  // ground truth with poses from ground truth). max_time_s becomes its duration.
+  [[nodiscard]] static robotio::Expected<std::unique_ptr<MissionRuntime>> CreateFromRecording(
+      MissionConfig config, const std::string& recording_dir);
   ~MissionRuntime();
   MissionRuntime(const MissionRuntime&) = delete;
   MissionRuntime& operator=(const MissionRuntime&) = delete;
@@ -77,8 +86,10 @@ class MissionRuntime {
  private:
   MissionRuntime(MissionConfig config, std::optional<robotio::sim::World> world);
   // Rig, robot and settings checked, mediator and recording made; no driver or workers.
+  // `recorded_rig`: the rig of a recording, used as it is (config.rig_file is not read).
   [[nodiscard]] static robotio::Expected<std::unique_ptr<MissionRuntime>> Prepare(
-      MissionConfig config, std::optional<robotio::sim::World> world);
+      MissionConfig config, std::optional<robotio::sim::World> world,
+      std::optional<robotio::Rig> recorded_rig);
   void MakeWorkers(const planning::GridMap& area);
   void Monitor();
 
@@ -89,7 +100,9 @@ class MissionRuntime {
   double footprint_radius_m_ = 0.36;
   std::unique_ptr<Mediator> mediator_;
   std::unique_ptr<robotio::RecordingWriter> recording_;
+  std::unique_ptr<robotio::RecordingReader> reader_;  // The recording a replay reads.
   std::unique_ptr<SensorDriver> driver_;
+  std::shared_ptr<const TruthGrid> live_truth_;  // Simulated truth at the time limit.
   std::unique_ptr<MappingWorker> mapping_;
   std::unique_ptr<PlanningWorker> planning_;
   std::unique_ptr<ControlWorker> control_;

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,11 @@ struct MissionSnapshot {
   std::int64_t guard_stops = 0;
   robotio::VelocityCommand command;         // Last velocity command sent.
   bool exploration_done = false;
+  double time_limit_s = 0.0;                // Mission time at which it ends (a replay: its length).
+  // With the simulator's truth (simulated worlds, simulated recordings): the ATE of the
+  // estimates so far, and the known share of the floor that will be reachable at the end.
+  std::optional<double> ate_so_far_m;
+  std::optional<double> explored_free_fraction;
 };
 
 struct MissionReport {
