@@ -120,8 +120,9 @@ void Run(const ExploreOptions& options) {
   robotio::Expected<std::unique_ptr<runtime::MissionRuntime>> runtime = [&] {
     if (!options.replay.empty()) {
       runtime::MissionConfig replay = config;
+      replay.recording_dir = options.replay;
       replay.rig_file = options.rig_given ? options.rig : std::string();
-      return runtime::MissionRuntime::CreateFromRecording(replay, options.replay);
+      return runtime::MissionRuntime::Create(replay);
     }
     if (!options.device) return runtime::MissionRuntime::Create(config);
     if (options.device_options.no_cameras) {

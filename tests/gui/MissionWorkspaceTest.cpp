@@ -1,11 +1,17 @@
 // The Mission workspace's logic against the real runtime on the small office at 160×120:
 // start / pause / resume / stop transitions and the buttons they enable, the report at the
-// end, a world file that cannot be opened, and the projected grid's picture.
+// end, a world file that cannot be opened, a recording replayed (source choice, progress,
+// live figures) or refused, and the projected grid's picture.
+#include <QDir>
+#include <QFile>
+#include <QLineEdit>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cmath>
 #include <memory>
 
 #include "GuiTestSupport.hpp"
@@ -14,6 +20,7 @@
 #include "dynamap/app/gui/MissionSession.hpp"
 #include "dynamap/app/gui/MissionWorkspace.hpp"
 #include "dynamap/app/gui/ResourceFiles.hpp"
+#include "dynamap/app/runtime/MissionRuntime.hpp"
 
 namespace dynamap::app::gui::test {
 
@@ -88,6 +95,90 @@ class MissionWorkspaceTest : public QObject {
     QCOMPARE(workspace.Session()->Phase(), MissionPhase::kIdle);
     QTest::qWait(300);
     QCOMPARE(workspace.Session()->Phase(), MissionPhase::kIdle);
+  }
+
+  void ChoosingARecordingBuildsAReplay() {
+    MissionWorkspace workspace;
+    MissionPanel* panel = workspace.Panel();
+    panel->SetRecording(QStringLiteral("/data/runs/office-1"));
+    runtime::MissionConfig config = panel->BuildConfig();
+    QCOMPARE(QString::fromStdString(config.recording_dir), QStringLiteral("/data/runs/office-1"));
+    QVERIFY(config.world_file.empty());
+    QVERIFY(config.rig_file.empty());  // As recorded.
+    auto* recording = panel->findChild<QLineEdit*>(QStringLiteral("mission_recording"));
+    QVERIFY(recording != nullptr && recording->isVisibleTo(panel));
+
+    panel->SetWorldFile(ResourcePath(QStringLiteral("worlds/small_office.yaml")));
+    config = panel->BuildConfig();
+    QVERIFY(config.recording_dir.empty());
+    QVERIFY(QString::fromStdString(config.world_file).endsWith(QStringLiteral("small_office.yaml")));
+    QVERIFY(QString::fromStdString(config.rig_file).endsWith(QStringLiteral("two_kinects.yaml")));
+    QVERIFY(!recording->isVisibleTo(panel));
+  }
+
+  // A short recorded mission replayed in the workspace: the progress bar runs through the
+  // recording and the live figures include the ATE and explored share from its truth.
+  void ReplayShowsProgressThroughTheRecordingAndLiveFigures() {
+    QTemporaryDir dir;
+    runtime::MissionConfig record;
+    record.world_file = ResourcePath(QStringLiteral("worlds/small_office.yaml")).toStdString();
+    record.out_dir = dir.filePath(QStringLiteral("recorded")).toStdString();
+    record.kinect_width = 160;
+    record.kinect_height = 120;
+    record.poses = runtime::PoseSource::kGroundTruth;
+    record.max_time_s = 5.0;
+    record.record = true;
+    {
+      auto recorded = runtime::MissionRuntime::Create(record);
+      QVERIFY2(recorded.ok(), recorded.ok() ? "" : recorded.error().message.c_str());
+      (*recorded)->Start();
+      (*recorded)->Wait();
+      QVERIFY((*recorded)->Finish().ok());
+    }
+    MissionWorkspace workspace;
+    MissionPanel* panel = workspace.Panel();
+    panel->SetRecording(dir.filePath(QStringLiteral("recorded/recording")));
+    panel->SetSavePeriod(600.0);
+    panel->SetOutputDir(dir.filePath(QStringLiteral("replay")));
+    auto* progress = panel->findChild<QProgressBar*>(QStringLiteral("mission_progress"));
+    QVERIFY(progress != nullptr);
+    QVERIFY(workspace.StartMission());
+    QTRY_VERIFY_WITH_TIMEOUT(workspace.Session()->Phase() == MissionPhase::kRunning ||
+                                 workspace.Session()->Phase() == MissionPhase::kFinishing ||
+                                 workspace.Session()->Phase() == MissionPhase::kFinished ||
+                                 workspace.Session()->Phase() == MissionPhase::kFailed,
+                             20000);
+    QVERIFY2(workspace.Session()->Phase() != MissionPhase::kFailed,
+             qPrintable(workspace.Session()->LastError()));
+    QTRY_COMPARE_WITH_TIMEOUT(workspace.Session()->Phase(), MissionPhase::kFinished, 60000);
+    const runtime::MissionSnapshot& last = workspace.Session()->Snapshot();
+    QVERIFY(std::abs(last.time_limit_s - 5.0) < 0.05);
+    QCOMPARE(progress->value(), 1000);
+    QVERIFY(last.ate_so_far_m.has_value());
+    QVERIFY(last.explored_free_fraction.has_value());
+    QVERIFY2(panel->FiguresText().contains(QStringLiteral("% of the reachable floor")),
+             qPrintable(panel->FiguresText()));
+    QVERIFY(workspace.Session()->Report()->frames_processed > 200);
+  }
+
+  void RecordingItCannotReplayFailsWithTheReason() {
+    QTemporaryDir dir;
+    QDir(dir.path()).mkpath(QStringLiteral("tum/depth"));
+    QFile::copy(QString::fromUtf8(DYNAMAP_SHARED_DATA_DIR) + QStringLiteral("/tum/TUM_depth.png"),
+                dir.filePath(QStringLiteral("tum/depth/1.000000.png")));
+    QFile index(dir.filePath(QStringLiteral("tum/depth.txt")));
+    QVERIFY(index.open(QIODevice::WriteOnly));
+    index.write("1.000000 depth/1.000000.png\n");
+    index.close();
+    MissionWorkspace workspace;
+    workspace.Panel()->SetRecording(dir.filePath(QStringLiteral("tum")));
+    workspace.Panel()->SetOutputDir(dir.filePath(QStringLiteral("out")));
+    QSignalSpy errors(&workspace, &MissionWorkspace::ErrorOccurred);
+    QVERIFY(workspace.StartMission());
+    QTRY_COMPARE_WITH_TIMEOUT(workspace.Session()->Phase(), MissionPhase::kFailed, 10000);
+    QCOMPARE(errors.count(), 1);
+    QVERIFY2(errors.at(0).at(0).toString().contains(QStringLiteral("no odometry.txt")),
+             qPrintable(errors.at(0).at(0).toString()));
   }
 
   void GridPictureIsNorthUpWithOneColourPerState() {

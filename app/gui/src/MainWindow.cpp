@@ -75,7 +75,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   AddWorkspace(calibration_, tr("Calibration"),
                tr("Calibrate the Kinect rig with the guided session"));
   mission_ = new MissionWorkspace;
-  AddWorkspace(mission_, tr("Mission"), tr("Explore a simulated world and watch the maps grow"));
+  AddWorkspace(mission_, tr("Mission"),
+               tr("Explore a simulated world, or replay a recording, and watch the maps grow"));
   maps_ = new MapsWorkspace;
   AddWorkspace(maps_, tr("Maps"), tr("Open, inspect and export saved maps"));
 
@@ -83,7 +84,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   statusBar()->addPermanentWidget(status_panel_);
   connect(mission_, &MissionWorkspace::StatusChanged, this,
           [this](const QString& state, std::optional<std::uint64_t> dropped) {
-            status_panel_->SetConnection(RobotConnection::kSimulator);
+            status_panel_->SetConnection(mission_->Session()->Config().recording_dir.empty()
+                                             ? RobotConnection::kSimulator
+                                             : RobotConnection::kRecording);
             status_panel_->SetMissionState(state);
             status_panel_->SetDroppedFrames(dropped);
           });

@@ -11,10 +11,15 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QStyle>
 #include <QToolButton>
 #include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
 
 #include "dynamap/app/gui/ResourceFiles.hpp"
 
@@ -25,7 +30,14 @@ namespace {
 QLabel* Value() {
   auto* label = new QLabel(QStringLiteral("–"));
   label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  label->setWordWrap(true);  // Long values wrap rather than widen the panel.
   return label;
+}
+
+// File lists show short names; a long one must not widen the panel.
+void KeepNarrow(QComboBox* combo) {
+  combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  combo->setMinimumContentsLength(14);
 }
 
 void FillFiles(QComboBox* combo, const QStringList& files, const QString& preferred) {
@@ -87,22 +99,50 @@ MissionPanel::MissionPanel(QWidget* parent) : QWidget(parent) {
 QWidget* MissionPanel::MakeSetupGroup() {
   auto* box = new QGroupBox(tr("Mission"));
   auto* form = new QFormLayout(box);
-  const auto with_browse = [this](QComboBox* combo, const QString& title) {
-    auto* row = new QHBoxLayout;
-    row->addWidget(combo, 1);
+  setup_form_ = form;
+  const auto with_browse = [this](QWidget* field, const QString& title,
+                                  const std::function<void()>& browse_action) {
+    auto* row = new QWidget;
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(field, 1);
     auto* browse = new QToolButton;
     browse->setText(QStringLiteral("…"));
     browse->setToolTip(title);
-    connect(browse, &QToolButton::clicked, this, [this, combo, title] { BrowseFile(combo, title); });
-    row->addWidget(browse);
+    connect(browse, &QToolButton::clicked, this, browse_action);
+    layout->addWidget(browse);
     return row;
   };
+  source_ = new QComboBox;
+  source_->setObjectName(QStringLiteral("mission_source"));
+  source_->addItem(tr("Simulated world"));
+  source_->addItem(tr("Recording"));
+  source_->setToolTip(tr("Explore a simulated world, or replay a recording through the "
+                         "mission (mapping and planning run; the robot is not steered)"));
+  form->addRow(tr("Source"), source_);
   world_ = new QComboBox;
   FillFiles(world_, ResourceFiles(QStringLiteral("worlds")), QStringLiteral("office.yaml"));
-  form->addRow(tr("World"), with_browse(world_, tr("Choose a world file")));
+  KeepNarrow(world_);
+  world_row_ = with_browse(world_, tr("Choose a world file"),
+                           [this] { BrowseFile(world_, tr("Choose a world file")); });
+  form->addRow(tr("World"), world_row_);
+  recording_ = new QLineEdit;
+  recording_->setObjectName(QStringLiteral("mission_recording"));
+  recording_->setPlaceholderText(tr("recording folder (dynamap record, explore --record)"));
+  recording_row_ = with_browse(recording_, tr("Choose a recording folder"), [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Choose a recording folder"),
+                                                          recording_->text());
+    if (!dir.isEmpty()) recording_->setText(dir);
+  });
+  form->addRow(tr("Recording"), recording_row_);
   rig_ = new QComboBox;
+  rig_->addItem(tr("As recorded"), QString());
   FillFiles(rig_, ResourceFiles(QStringLiteral("rigs")), QStringLiteral("two_kinects.yaml"));
-  form->addRow(tr("Rig"), with_browse(rig_, tr("Choose a rig file")));
+  KeepNarrow(rig_);
+  form->addRow(tr("Rig"), with_browse(rig_, tr("Choose a rig file"),
+                                      [this] { BrowseFile(rig_, tr("Choose a rig file")); }));
+  connect(source_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+          [this] { ShowSource(); });
   poses_ = new QComboBox;
   poses_->addItem(tr("SLAM"), static_cast<int>(runtime::PoseSource::kSlam));
   poses_->addItem(tr("Odometry"), static_cast<int>(runtime::PoseSource::kOdometry));
@@ -119,7 +159,6 @@ QWidget* MissionPanel::MakeSetupGroup() {
   time_limit_->setDecimals(0);
   time_limit_->setSuffix(tr(" s"));
   time_limit_->setValue(600.0);
-  time_limit_->setToolTip(tr("Simulated time after which the mission is ended"));
   form->addRow(tr("Time limit"), time_limit_);
   pace_ = new QComboBox;
   pace_->addItem(tr("As fast as possible"), 0.0);
@@ -137,7 +176,30 @@ QWidget* MissionPanel::MakeSetupGroup() {
   out_dir_ = new QLineEdit;
   out_dir_->setPlaceholderText(tr("new folder in ~/dynamap-missions"));
   form->addRow(tr("Results"), out_dir_);
+  ShowSource();
   return box;
+}
+
+bool MissionPanel::ReplaysRecording() const { return source_->currentIndex() == 1; }
+
+void MissionPanel::ShowSource() {
+  const bool replay = ReplaysRecording();
+  const auto show_row = [this](QWidget* field, bool visible) {
+    field->setVisible(visible);
+    if (QWidget* label = setup_form_->labelForField(field)) label->setVisible(visible);
+  };
+  show_row(world_row_, !replay);
+  show_row(recording_row_, replay);
+  // A replay has the recorded images and rig; a simulation needs a rig file.
+  kinect_size_->setEnabled(!replay);
+  if (replay) {
+    rig_->setCurrentIndex(0);
+  } else if (rig_->currentData().toString().isEmpty()) {
+    rig_->setCurrentIndex(std::max(0, rig_->findText(QStringLiteral("two_kinects.yaml"))));
+  }
+  time_limit_->setToolTip(replay ? tr("Recorded time after which the replay is ended (at "
+                                      "most the recording's length)")
+                                 : tr("Simulated time after which the mission is ended"));
 }
 
 QWidget* MissionPanel::MakeFiguresGroup() {
@@ -151,12 +213,22 @@ QWidget* MissionPanel::MakeFiguresGroup() {
   collisions_ = Value();
   target_ = Value();
   command_ = Value();
+  ate_ = Value();
+  explored_ = Value();
+  progress_ = new QProgressBar;
+  progress_->setObjectName(QStringLiteral("mission_progress"));
+  progress_->setRange(0, 1000);
+  progress_->setValue(0);
+  progress_->setFormat(QStringLiteral("–"));
   form->addRow(tr("State"), state_);
-  form->addRow(tr("Simulated time"), sim_time_);
+  form->addRow(tr("Progress"), progress_);
+  form->addRow(tr("Mission time"), sim_time_);
   form->addRow(tr("Distance driven"), distance_);
   form->addRow(tr("Frames mapped"), frames_);
   form->addRow(tr("Frames dropped"), dropped_);
   form->addRow(tr("Collisions"), collisions_);
+  form->addRow(tr("Explored"), explored_);
+  form->addRow(tr("ATE so far"), ate_);
   form->addRow(tr("Target"), target_);
   form->addRow(tr("Command"), command_);
   return box;
@@ -171,7 +243,11 @@ void MissionPanel::BrowseFile(QComboBox* combo, const QString& title) {
 
 runtime::MissionConfig MissionPanel::BuildConfig() const {
   runtime::MissionConfig config;
-  config.world_file = world_->currentData().toString().toStdString();
+  if (ReplaysRecording()) {
+    config.recording_dir = recording_->text().trimmed().toStdString();
+  } else {
+    config.world_file = world_->currentData().toString().toStdString();
+  }
   config.rig_file = rig_->currentData().toString().toStdString();
   // The runtime loads exactly the files it is given.
   config.robot_file = ResourcePath(QStringLiteral("robots/segway_rmp50.yaml")).toStdString();
@@ -192,7 +268,15 @@ runtime::MissionConfig MissionPanel::BuildConfig() const {
   return config;
 }
 
-void MissionPanel::SetWorldFile(const QString& file) { SelectFile(world_, file); }
+void MissionPanel::SetWorldFile(const QString& file) {
+  source_->setCurrentIndex(0);
+  SelectFile(world_, file);
+}
+
+void MissionPanel::SetRecording(const QString& dir) {
+  source_->setCurrentIndex(1);
+  recording_->setText(dir);
+}
 void MissionPanel::SetRigFile(const QString& file) { SelectFile(rig_, file); }
 
 void MissionPanel::SetPoseSource(runtime::PoseSource source) {
@@ -230,6 +314,16 @@ void MissionPanel::ShowPhase(MissionPhase phase) {
 
 void MissionPanel::ShowSnapshot(const runtime::MissionSnapshot& s) {
   sim_time_->setText(tr("%1 s").arg(s.sim_time_s, 0, 'f', 1));
+  if (s.time_limit_s > 0.0) {
+    const double fraction = std::clamp(s.sim_time_s / s.time_limit_s, 0.0, 1.0);
+    progress_->setValue(static_cast<int>(std::lround(1000.0 * fraction)));
+    progress_->setFormat(tr("%1 of %2 s").arg(s.sim_time_s, 0, 'f', 0).arg(s.time_limit_s, 0, 'f', 0));
+  }
+  explored_->setText(s.explored_free_fraction
+                         ? tr("%1 % of the reachable floor").arg(100.0 * *s.explored_free_fraction, 0, 'f', 1)
+                         : tr("– (no ground truth)"));
+  ate_->setText(s.ate_so_far_m ? tr("%1 m").arg(*s.ate_so_far_m, 0, 'f', 3)
+                               : tr("– (no ground truth)"));
   distance_->setText(tr("%1 m").arg(s.distance_m, 0, 'f', 2));
   frames_->setText(tr("%1 of %2").arg(s.frames_processed).arg(s.frames_delivered));
   dropped_->setText(QString::number(s.frames_dropped));
@@ -272,8 +366,10 @@ void MissionPanel::ShowReport(const std::optional<runtime::MissionReport>& repor
 }
 
 QString MissionPanel::FiguresText() const {
-  return QStringList{state_->text(), sim_time_->text(), distance_->text(), frames_->text(),
-                     dropped_->text(), collisions_->text(), target_->text()}
+  return QStringList{state_->text(),    progress_->text(),   sim_time_->text(),
+                     distance_->text(), frames_->text(),     dropped_->text(),
+                     collisions_->text(), explored_->text(), ate_->text(),
+                     target_->text()}
       .join(QStringLiteral(" | "));
 }
 

@@ -2,8 +2,10 @@
 
 #include <QHBoxLayout>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "dynamap/app/gui/DepthPreview.hpp"
@@ -29,8 +31,11 @@ MissionWorkspace::MissionWorkspace(QWidget* parent) : QWidget(parent) {
   scroll->setWidget(panel_);
   scroll->setWidgetResizable(true);
   scroll->setFrameShape(QFrame::NoFrame);
-  scroll->setMinimumWidth(390);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  // Never narrower than the panel needs: with no horizontal scroll bar it would be cut.
+  const int panel_width = std::max(390, panel_->minimumSizeHint().width() +
+                                            scroll->verticalScrollBar()->sizeHint().width());
+  scroll->setMinimumWidth(panel_width);
 
   auto* bottom = new QSplitter(Qt::Horizontal);
   bottom->addWidget(grid_);
@@ -49,7 +54,7 @@ MissionWorkspace::MissionWorkspace(QWidget* parent) : QWidget(parent) {
   splitter->addWidget(scroll);
   splitter->addWidget(views);
   splitter->setStretchFactor(1, 1);
-  splitter->setSizes({400, 1000});
+  splitter->setSizes({panel_width + 10, 1000});
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(splitter);

@@ -138,6 +138,10 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Prepare(
 }
 
 robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Create(MissionConfig config) {
+  if (!config.recording_dir.empty()) {
+    const std::string dir = config.recording_dir;
+    return CreateFromRecording(std::move(config), dir);
+  }
   auto world = robotio::sim::LoadWorld(config.world_file);
   if (!world) return world.error();
   auto prepared = Prepare(std::move(config), std::move(*world), std::nullopt);

@@ -1,6 +1,8 @@
-// The left panel of the Mission workspace: what to run (world, rig, pose source, Kinect
-// resolution, time limit, pace, 3D map refresh, results folder), Start / Pause / Resume /
-// Stop, the live figures of the running mission and the report when it has ended.
+// The left panel of the Mission workspace: what to run (a simulated world or a recording
+// to replay, rig, pose source, Kinect resolution, time limit, pace, map save period,
+// results folder), Start / Pause / Resume / Stop, the live figures of the running mission
+// (with a progress bar through the time limit or the recording) and the report when it
+// has ended.
 #pragma once
 
 #include <QString>
@@ -13,6 +15,8 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
+class QProgressBar;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -28,8 +32,11 @@ class MissionPanel : public QWidget {
   // The mission the controls describe; an empty results folder becomes a new folder under
   // ~/dynamap-missions named after the start time.
   [[nodiscard]] runtime::MissionConfig BuildConfig() const;
-  // Selects `file` (adding it to the list when it is not one of resources/).
+  // Selects `file` (adding it to the list when it is not one of resources/) and the
+  // simulated world as the source.
   void SetWorldFile(const QString& file);
+  // Selects the recording folder `dir` as the source.
+  void SetRecording(const QString& dir);
   void SetRigFile(const QString& file);
   void SetPoseSource(runtime::PoseSource source);
   void SetKinectSize(int width, int height);
@@ -58,8 +65,15 @@ class MissionPanel : public QWidget {
   QWidget* MakeSetupGroup();
   QWidget* MakeFiguresGroup();
   void BrowseFile(QComboBox* combo, const QString& title);
+  [[nodiscard]] bool ReplaysRecording() const;
+  void ShowSource();  // The rows that belong to the chosen source.
 
   QWidget* setup_ = nullptr;
+  QFormLayout* setup_form_ = nullptr;
+  QComboBox* source_ = nullptr;
+  QWidget* world_row_ = nullptr;
+  QWidget* recording_row_ = nullptr;
+  QLineEdit* recording_ = nullptr;
   QComboBox* world_ = nullptr;
   QComboBox* rig_ = nullptr;
   QComboBox* poses_ = nullptr;
@@ -80,6 +94,9 @@ class MissionPanel : public QWidget {
   QLabel* collisions_ = nullptr;
   QLabel* target_ = nullptr;
   QLabel* command_ = nullptr;
+  QLabel* explored_ = nullptr;
+  QLabel* ate_ = nullptr;
+  QProgressBar* progress_ = nullptr;
   QLabel* report_ = nullptr;
 };
 

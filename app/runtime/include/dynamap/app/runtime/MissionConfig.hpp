@@ -17,7 +17,11 @@ enum class PoseSource { kSlam, kOdometry, kGroundTruth };
 struct MissionConfig {
   std::string world_file;            // Simulated world (resources/worlds/*.yaml); empty
                                      // on the real robot.
-  std::string rig_file;              // Kinect rig; empty = resources/rigs/two_kinects.yaml.
+  // A recording to replay through the mission instead of simulating world_file
+  // (MissionRuntime::CreateFromRecording); empty = simulate.
+  std::string recording_dir;
+  std::string rig_file;              // Kinect rig; empty = resources/rigs/two_kinects.yaml
+                                     // (a replay: the recorded rig).
   std::string robot_file;            // Empty = resources/robots/segway_rmp50.yaml.
   std::string out_dir;               // Results folder (created).
   std::uint64_t seed = 1;            // Simulator seed.

@@ -37,6 +37,7 @@ class ControlWorker;
 class MissionRuntime {
  public:
   // Loads world, rig and robot files; errors name the file and key, before anything runs.
+  // With config.recording_dir set, the same as CreateFromRecording.
   [[nodiscard]] static robotio::Expected<std::unique_ptr<MissionRuntime>> Create(
       MissionConfig config);
   // The same on the real robot: `sources` are opened devices (borrowed; they must outlive
