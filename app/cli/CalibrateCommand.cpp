@@ -14,6 +14,7 @@
 #include "cli/CommandSupport.hpp"
 #include "cli/ProgressLine.hpp"
 #include "dynamap/calibration/CalibrationSession.hpp"
+#include "dynamap/calibration/CaptureReplay.hpp"
 #include "dynamap/calibration/ResidualPlot.hpp"
 #include "dynamap/robotio/RecordingReader.hpp"
 #include "dynamap/robotio/Time.hpp"
@@ -199,33 +200,16 @@ std::vector<std::string> CalibrateInSimulator(cal::CalibrationSession* session,
 void ReplayRecording(cal::CalibrationSession* session, const std::string& dir) {
   auto reader = robotio::RecordingReader::Open(dir);
   if (!reader) FailCommand(kCommand, reader.error().message);
-  const auto& odometry = reader->odometry();
-  const auto& imu = reader->imu();
-  const auto& depth = reader->depth_entries();
-  std::size_t i = 0, j = 0, k = 0;
+  cal::CaptureReplay replay(*reader);
   ProgressLine progress("replaying");
-  while (i < odometry.size() || j < imu.size() || k < depth.size()) {
-    const std::int64_t to = i < odometry.size() ? odometry[i].stamp_ns : INT64_MAX;
-    const std::int64_t ti = j < imu.size() ? imu[j].stamp_ns : INT64_MAX;
-    const std::int64_t td = k < depth.size() ? depth[k].received_ns : INT64_MAX;
-    if (to <= ti && to <= td) {
-      // The floor step lasts while the robot stands still at the start of the recording.
-      if (session->step() == cal::SessionStep::kFloor && i > 0 &&
-          std::abs(odometry[i].left_m - odometry[i - 1].left_m) +
-                  std::abs(odometry[i].right_m - odometry[i - 1].right_m) > 1e-3) {
-        session->Skip();
-      }
-      session->AddOdometry(odometry[i++]);
-    } else if (ti <= td) {
-      session->AddImu(imu[j++]);
-    } else {
-      auto frame = reader->LoadDepth(depth[k++]);
-      if (!frame) FailCommand(kCommand, frame.error().message);
-      session->AddDepth(*frame);
-      progress.Update(static_cast<double>(k) / depth.size(), cal::SessionStepName(session->step()));
+  constexpr std::int64_t kChunkNs = 100'000'000;  // 0.1 s of recorded time per update.
+  for (std::int64_t t = replay.begin_ns(); !replay.done(); t += kChunkNs) {
+    if (auto fed = replay.FeedUntil(*session, t, nullptr); !fed) {
+      FailCommand(kCommand, fed.error().message);
     }
+    progress.Update(replay.fraction(), cal::SessionStepName(session->step()));
   }
-  progress.Finish(std::to_string(depth.size()) + " frames");
+  progress.Finish(std::to_string(reader->depth_entries().size()) + " frames");
 }
 
 nlohmann::json ParameterJson(const cal::ParameterEstimate& p, std::optional<double> truth) {

@@ -6,14 +6,12 @@
 #include <OpenNI.h>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 
 #include "../robotio/TestPaths.hpp"
+#include "../support/CommandRunner.hpp"
 #include "../support/ReprojectedView.hpp"
 #include "dynamap/robotio/DepthImageIo.hpp"
 #include "dynamap/robotio/Rig.hpp"
@@ -24,28 +22,9 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr.
-};
-
-CommandResult RunDynamap(const std::string& arguments, const std::string& log_file) {
-  const std::string command =
-      std::string(DYNAMAP_EXECUTABLE) + " " + arguments + " > " + log_file + " 2>&1";
-  CommandResult result;
-  const int status = std::system(command.c_str());
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(log_file);
-  std::stringstream text;
-  text << in.rdbuf();
-  result.output = text.str();
-  return result;
-}
-
-nlohmann::json ReadJson(const std::string& file) {
-  std::ifstream in(file);
-  return nlohmann::json::parse(in);
-}
+using test::CommandResult;
+using test::ReadJson;
+using test::RunDynamap;
 
 std::size_t CountLines(const std::string& file) {
   std::ifstream in(file);

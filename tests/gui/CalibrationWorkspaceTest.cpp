@@ -1,19 +1,22 @@
 // The Calibration workspace's wizard against the simulator at 160 px: Next is refused until
 // the floor step is complete, standing still completes it, Next and Skip move through the
-// steps, solving shows the rig table, and a room file that cannot be opened is an error
-// naming it.
+// steps, solving shows the rig table, a recording of the guided sequence is replayed and
+// solved, and a room file that cannot be opened is an error naming it.
+#include <QProcess>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cmath>
 #include <memory>
 
 #include "GuiTestSupport.hpp"
 #include "dynamap/app/gui/CalibrationResults.hpp"
 #include "dynamap/app/gui/CalibrationWorkspace.hpp"
 #include "dynamap/app/gui/ResourceFiles.hpp"
+#include "dynamap/app/gui/RigView.hpp"
 
 namespace dynamap::app::gui::test {
 
@@ -60,6 +63,52 @@ class CalibrationWorkspaceTest : public QObject {
     workspace.SaveTo(dir.filePath(QStringLiteral("rig.yaml")));
     QTRY_VERIFY_WITH_TIMEOUT(!workspace.LastMessage().isEmpty(), 5000);
     QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("rig.yaml"))));
+  }
+
+  // A recording of the guided sequence (the calibration room's teleop script, first 40 s:
+  // floor and turns) replayed: no driving, the recording's progress, then the solve.
+  void RecordingIsReplayedThenSolved() {
+    QTemporaryDir dir;
+    const QString recording = dir.filePath(QStringLiteral("recording"));
+    QProcess record;
+    record.start(QString::fromUtf8(DYNAMAP_EXECUTABLE),
+                 {QStringLiteral("record"), QStringLiteral("--world"),
+                  ResourcePath(QStringLiteral("worlds/calibration_room.yaml")),
+                  QStringLiteral("--duration"), QStringLiteral("40"), QStringLiteral("--width"),
+                  QStringLiteral("160"), QStringLiteral("--out"), recording});
+    QVERIFY(record.waitForFinished(120000));
+    QCOMPARE(record.exitCode(), 0);
+
+    CalibrationWorkspace workspace;
+    workspace.SetRecording(recording);
+    workspace.SetSpeed(0.0);
+    workspace.SetOutputDir(dir.path());
+    QCOMPARE(QString::fromStdString(workspace.BuildSetup().recording_dir), recording);
+    QSignalSpy started(&workspace, &CalibrationWorkspace::SessionStarted);
+    workspace.BeginSession(workspace.BuildSetup());
+    QVERIFY(started.wait(20000));
+    QTRY_VERIFY_WITH_TIMEOUT(workspace.LastState().replay_fraction >= 1.0, 60000);
+    QVERIFY(workspace.LastState().replay);
+    // The floor step ended when the wheels first moved; the turns were counted.
+    QVERIFY(workspace.LastState().progress.step != cal::SessionStep::kFloor);
+    QVERIFY(workspace.LastState().progress.turned_left_deg > 270.0);
+    QVERIFY(!workspace.LastState().depth.empty());
+    auto* drive = workspace.findChild<QPushButton*>(QStringLiteral("calibration_drive_step"));
+    QVERIFY(drive != nullptr);
+    QVERIFY(!drive->isEnabled());  // A recording is not driven.
+
+    workspace.Solve();
+    QTRY_COMPARE_WITH_TIMEOUT(workspace.LastState().progress.step, cal::SessionStep::kReview,
+                              60000);
+    QTRY_COMPARE_WITH_TIMEOUT(workspace.Results()->Table()->rowCount(), 2 * 7 + 2, 5000);
+    // The rig is drawn on the robot where it was estimated, with its uncertainty.
+    const RigView* rig = workspace.Results()->Rig3d();
+    QCOMPARE(rig->DrawnPoses().size(), std::size_t{2});
+    const auto& estimate = workspace.LastState().result->kinects[0].parameters;
+    QVERIFY((rig->DrawnPoses()[0].translation() -
+             Eigen::Vector3d(estimate[3].estimate, estimate[4].estimate, estimate[5].estimate))
+                .norm() < 1e-9);
+    QVERIFY(std::abs(rig->DrawnSemiAxes()[0].x() - 3.0 * estimate[3].std_dev) < 1e-12);
   }
 
   void RoomThatCannotBeOpenedIsAnErrorNamingIt() {

@@ -5,6 +5,7 @@
 // pictures hold what they should (voxels, red dynamic ones).
 #include <QDir>
 #include <QImage>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -15,6 +16,7 @@
 #include "GuiTestSupport.hpp"
 #include "dynamap/app/gui/CalibrationResults.hpp"
 #include "dynamap/app/gui/CalibrationWorkspace.hpp"
+#include "dynamap/app/gui/RigView.hpp"
 #include "dynamap/app/gui/DepthPreview.hpp"
 #include "dynamap/app/gui/MainWindow.hpp"
 #include "dynamap/app/gui/MapControls.hpp"
@@ -118,6 +120,42 @@ class ScreenshotTest : public QObject {
     QTest::qWait(300);
     window_->grab().toImage().save(
         QDir(out_dir_).filePath(QStringLiteral("calibration_review.png")));
+    calibration->EndSession();
+  }
+
+  // The whole guided sequence as recorded by hand (the calibration room's teleop script,
+  // 160 px) replayed and solved: the estimated rig on the robot in 3D.
+  void CalibrationFromARecording() {
+    window_->ShowWorkspace(0);
+    QTemporaryDir out;
+    const QString recording = out.filePath(QStringLiteral("recording"));
+    QProcess record;
+    record.start(QString::fromUtf8(DYNAMAP_EXECUTABLE),
+                 {QStringLiteral("record"), QStringLiteral("--world"),
+                  ResourcePath(QStringLiteral("worlds/calibration_room.yaml")),
+                  QStringLiteral("--duration"), QStringLiteral("89"), QStringLiteral("--width"),
+                  QStringLiteral("160"), QStringLiteral("--out"), recording});
+    QVERIFY(record.waitForFinished(180000));
+    QCOMPARE(record.exitCode(), 0);
+    CalibrationWorkspace* calibration = window_->Calibration();
+    calibration->SetRecording(recording);
+    calibration->SetSpeed(0.0);
+    calibration->SetOutputDir(out.path());
+    QSignalSpy started(calibration, &CalibrationWorkspace::SessionStarted);
+    calibration->BeginSession(calibration->BuildSetup());
+    QVERIFY(started.wait(20000));
+    QTRY_VERIFY_WITH_TIMEOUT(calibration->LastState().replay_fraction >= 1.0, 120000);
+    calibration->Solve();
+    QTRY_COMPARE_WITH_TIMEOUT(calibration->LastState().progress.step,
+                              calibration::SessionStep::kReview, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(calibration->Results()->Table()->rowCount() > 0, 5000);
+    calibration->Results()->ShowRigTab();
+    QTest::qWait(500);
+    const QImage rig = calibration->Results()->Rig3d()->grabFramebuffer();
+    rig.save(QDir(out_dir_).filePath(QStringLiteral("calibration_rig_3d_view.png")));
+    window_->grab().toImage().save(
+        QDir(out_dir_).filePath(QStringLiteral("calibration_recording_rig_3d.png")));
+    QVERIFY(DistinctColours(rig) > 20);
     calibration->EndSession();
   }
 

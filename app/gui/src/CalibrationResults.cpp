@@ -1,5 +1,7 @@
 #include "dynamap/app/gui/CalibrationResults.hpp"
 
+#include "dynamap/app/gui/RigView.hpp"
+
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QLabel>
@@ -53,12 +55,15 @@ CalibrationResults::CalibrationResults(QWidget* parent) : QWidget(parent) {
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   plots_ = new QTabWidget;
+  rig_view_ = new RigView;
   auto* tabs = new QTabWidget;
+  tabs_ = tabs;
   auto* rig_page = new QWidget;
   auto* rig_layout = new QVBoxLayout(rig_page);
   rig_layout->addWidget(summary_);
   rig_layout->addWidget(table_, 1);
   tabs->addTab(rig_page, tr("Estimated rig"));
+  tabs->addTab(rig_view_, tr("Rig in 3D"));
   tabs->addTab(plots_, tr("Residuals"));
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -69,11 +74,16 @@ CalibrationResults::CalibrationResults(QWidget* parent) : QWidget(parent) {
 void CalibrationResults::Clear() {
   summary_->setText(tr("Solve to see the estimated rig, its uncertainties and the residuals."));
   table_->setRowCount(0);
+  rig_view_->Clear();
   while (plots_->count() > 0) plots_->widget(0)->deleteLater(), plots_->removeTab(0);
 }
 
-void CalibrationResults::Show(const cal::SolverResult& result, const robotio::Rig& truth,
-                              double true_scale_left, double true_scale_right) {
+void CalibrationResults::ShowRigTab() { tabs_->setCurrentWidget(rig_view_); }
+
+void CalibrationResults::Show(const cal::SolverResult& result, const robotio::Rig& guess,
+                              const robotio::Rig& truth, double true_scale_left,
+                              double true_scale_right, double robot_radius_m) {
+  rig_view_->ShowRig(result, guess, truth, robot_radius_m);
   QString summary = result.converged ? tr("<b>Solver converged.</b> ") : tr("<b>Solver failed.</b> ");
   summary += result.AllCalibrated() ? tr("Every parameter is calibrated.")
                                     : tr("Not every parameter is calibrated; Save needs "

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <random>
 
+#include "dynamap/calibration/CaptureReplay.hpp"
 #include "dynamap/calibration/ResidualPlot.hpp"
+#include "dynamap/robotio/RecordingReader.hpp"
 #include "dynamap/robotio/Time.hpp"
 #include "dynamap/robotio/sim/RobotConfig.hpp"
 #include "dynamap/robotio/sim/Simulator.hpp"
@@ -81,9 +83,13 @@ robotio::Rig SimulatedRigTruth(const robotio::Rig& guess, const CalibrationSetup
 }
 
 struct CalibrationRun::Impl {
-  Impl(robotio::sim::Simulator sim, cal::CalibrationSession s, cal::SessionConfig c)
-      : simulator(std::move(sim)), session(std::move(s)), config(std::move(c)) {}
-  robotio::sim::Simulator simulator;
+  Impl(cal::CalibrationSession s, cal::SessionConfig c)
+      : session(std::move(s)), config(std::move(c)) {}
+  std::optional<robotio::sim::Simulator> simulator;       // Simulated session ...
+  std::unique_ptr<robotio::RecordingReader> reader;       // ... or a recording replayed.
+  std::unique_ptr<cal::CaptureReplay> replay;
+  std::int64_t replay_ns = 0;  // Recorded time fed up to.
+  bool replay_failed = false;
   cal::CalibrationSession session;
   cal::SessionConfig config;
   double v = 0.0;
@@ -95,27 +101,53 @@ struct CalibrationRun::Impl {
 
 robotio::Expected<std::unique_ptr<CalibrationRun>> CalibrationRun::Create(
     const CalibrationSetup& setup) {
-  auto world = robotio::sim::LoadWorld(setup.world_file);
-  if (!world) return world.error();
   auto guess = robotio::LoadRig(setup.rig_guess_file);
   if (!guess) return guess.error();
   auto robot = robotio::sim::LoadRobotConfig(setup.robot_file);
   if (!robot) return robot.error();
+  std::unique_ptr<robotio::RecordingReader> reader;
+  std::optional<robotio::sim::World> world;
+  if (!setup.recording_dir.empty()) {
+    auto opened = robotio::RecordingReader::Open(setup.recording_dir);
+    if (!opened) return opened.error();
+    if (opened->odometry().empty() || opened->depth_entries().empty()) {
+      return robotio::Error{setup.recording_dir +
+                            ": a calibration recording needs odometry.txt and depth frames"};
+    }
+    reader = std::make_unique<robotio::RecordingReader>(std::move(*opened));
+  } else {
+    auto loaded = robotio::sim::LoadWorld(setup.world_file);
+    if (!loaded) return loaded.error();
+    world = std::move(*loaded);
+  }
   std::error_code ec;
   std::filesystem::create_directories(setup.out_dir, ec);
   if (ec) return robotio::Error{setup.out_dir + ": cannot create the output folder"};
 
-  robotio::Rig truth = SimulatedRigTruth(*guess, setup);
-  std::unique_ptr<CalibrationRun> run(new CalibrationRun(setup, *guess, truth));
-  run->true_scale_left_ = 1.0 / (1.0 + robot->encoder_scale_error_left);
-  run->true_scale_right_ = 1.0 / (1.0 + robot->encoder_scale_error_right);
   cal::SessionConfig config;
   config.track_width_m = robot->track_width_m;
+  if (reader) {
+    std::unique_ptr<CalibrationRun> run(new CalibrationRun(setup, *guess, robotio::Rig{}));
+    run->robot_radius_m_ = robot->footprint_radius_m;
+    run->impl_ = std::make_unique<Impl>(cal::CalibrationSession(*guess, config), config);
+    run->impl_->replay = std::make_unique<cal::CaptureReplay>(*reader);
+    run->impl_->replay_ns = run->impl_->replay->begin_ns();
+    run->impl_->reader = std::move(reader);
+    run->impl_->depth.resize(guess->kinects.size());
+    run->state_.progress = run->impl_->session.Progress();
+    run->state_.replay = true;
+    run->thread_ = std::thread([r = run.get()] { r->Loop(); });
+    return run;
+  }
+  robotio::Rig truth = SimulatedRigTruth(*guess, setup);
+  std::unique_ptr<CalibrationRun> run(new CalibrationRun(setup, *guess, truth));
+  run->robot_radius_m_ = robot->footprint_radius_m;
+  run->true_scale_left_ = 1.0 / (1.0 + robot->encoder_scale_error_left);
+  run->true_scale_right_ = 1.0 / (1.0 + robot->encoder_scale_error_right);
   robotio::sim::SimulatorConfig sim_config;
   sim_config.seed = setup.seed;
-  run->impl_ = std::make_unique<Impl>(
-      robotio::sim::Simulator(*world, *robot, truth, sim_config),
-      cal::CalibrationSession(*guess, config), config);
+  run->impl_ = std::make_unique<Impl>(cal::CalibrationSession(*guess, config), config);
+  run->impl_->simulator.emplace(*world, *robot, truth, sim_config);
   run->impl_->depth.resize(guess->kinects.size());
   run->state_.progress = run->impl_->session.Progress();
   run->thread_ = std::thread([r = run.get()] { r->Loop(); });
@@ -139,8 +171,18 @@ void CalibrationRun::Post(std::function<void()> request) {
   queue_changed_.notify_all();
 }
 
+namespace {
+void Report(std::mutex& mutex, CalibrationState& state, const std::string& message) {
+  std::lock_guard<std::mutex> lock(mutex);
+  state.message = message;
+  ++state.message_serial;
+}
+constexpr const char* kRecordedNotDriven = "a recording cannot be driven: it replays as recorded";
+}  // namespace
+
 void CalibrationRun::Drive(double v_mps, double omega_radps) {
   Post([this, v_mps, omega_radps] {
+    if (!impl_->simulator) return Report(state_mutex_, state_, kRecordedNotDriven);
     impl_->script.clear();
     impl_->v = v_mps;
     impl_->omega = omega_radps;
@@ -149,18 +191,11 @@ void CalibrationRun::Drive(double v_mps, double omega_radps) {
 
 void CalibrationRun::DriveCurrentStep() {
   Post([this] {
+    if (!impl_->simulator) return Report(state_mutex_, state_, kRecordedNotDriven);
     impl_->script = ScriptFor(impl_->session.step(), impl_->config);
     impl_->phase_elapsed_s = 0.0;
   });
 }
-
-namespace {
-void Report(std::mutex& mutex, CalibrationState& state, const std::string& message) {
-  std::lock_guard<std::mutex> lock(mutex);
-  state.message = message;
-  ++state.message_serial;
-}
-}  // namespace
 
 void CalibrationRun::Advance() {
   Post([this] {
@@ -224,6 +259,48 @@ CalibrationState CalibrationRun::State() const {
   return state_;
 }
 
+void CalibrationRun::CaptureStep() {
+  Impl& m = *impl_;
+  if (!m.simulator) {
+    m.replay_ns += robotio::SecondsToNanos(kStepS);
+    if (auto fed = m.replay->FeedUntil(m.session, m.replay_ns, &m.depth); !fed) {
+      m.replay_failed = true;
+      Report(state_mutex_, state_, fed.error().message);
+    }
+    return;
+  }
+  if (!m.script.empty()) {
+    const Phase& phase = m.script.front();
+    m.v = phase.v;
+    m.omega = phase.omega;
+  }
+  m.simulator->SetCommand({m.simulator->now_ns(), m.v, m.omega});
+  const robotio::sim::SimOutput out = m.simulator->Advance(kStepS);
+  std::size_t i = 0, j = 0;
+  while (i < out.odometry.size() || j < out.imu.size()) {
+    if (j >= out.imu.size() ||
+        (i < out.odometry.size() && out.odometry[i].stamp_ns <= out.imu[j].stamp_ns)) {
+      m.session.AddOdometry(out.odometry[i++]);
+    } else {
+      m.session.AddImu(out.imu[j++]);
+    }
+  }
+  for (const auto& frame : out.frames) {
+    m.session.AddDepth(frame.depth);
+    const auto sensor = static_cast<std::size_t>(frame.depth.sensor_id);
+    if (sensor < m.depth.size()) m.depth[sensor] = frame.depth;
+  }
+  if (!m.script.empty()) {
+    m.phase_elapsed_s += kStepS;
+    const Phase& phase = m.script.front();
+    if (phase.done(m.session.Progress()) || m.phase_elapsed_s >= phase.max_s) {
+      m.script.pop_front();
+      m.phase_elapsed_s = 0.0;
+      if (m.script.empty()) m.v = m.omega = 0.0;
+    }
+  }
+}
+
 void CalibrationRun::Loop() {
   using Clock = std::chrono::steady_clock;
   const auto wall_start = Clock::now();
@@ -238,39 +315,12 @@ void CalibrationRun::Loop() {
     for (auto& request : requests) request();
 
     Impl& m = *impl_;
-    const bool capturing = IsCaptureStep(m.session.step());
+    // A replay that has fed its whole recording waits, like the steps after capture.
+    const bool replay_over = !m.simulator && (m.replay->done() || m.replay_failed);
+    const bool capturing = IsCaptureStep(m.session.step()) && !replay_over;
     if (capturing) {
-      if (!m.script.empty()) {
-        const Phase& phase = m.script.front();
-        m.v = phase.v;
-        m.omega = phase.omega;
-      }
-      m.simulator.SetCommand({m.simulator.now_ns(), m.v, m.omega});
-      const robotio::sim::SimOutput out = m.simulator.Advance(kStepS);
-      std::size_t i = 0, j = 0;
-      while (i < out.odometry.size() || j < out.imu.size()) {
-        if (j >= out.imu.size() ||
-            (i < out.odometry.size() && out.odometry[i].stamp_ns <= out.imu[j].stamp_ns)) {
-          m.session.AddOdometry(out.odometry[i++]);
-        } else {
-          m.session.AddImu(out.imu[j++]);
-        }
-      }
-      for (const auto& frame : out.frames) {
-        m.session.AddDepth(frame.depth);
-        const auto sensor = static_cast<std::size_t>(frame.depth.sensor_id);
-        if (sensor < m.depth.size()) m.depth[sensor] = frame.depth;
-      }
+      CaptureStep();
       sim_s += kStepS;
-      if (!m.script.empty()) {
-        m.phase_elapsed_s += kStepS;
-        const Phase& phase = m.script.front();
-        if (phase.done(m.session.Progress()) || m.phase_elapsed_s >= phase.max_s) {
-          m.script.pop_front();
-          m.phase_elapsed_s = 0.0;
-          if (m.script.empty()) m.v = m.omega = 0.0;
-        }
-      }
     } else {
       m.v = m.omega = 0.0;
       m.script.clear();
@@ -286,7 +336,9 @@ void CalibrationRun::Loop() {
         published = state_;
       }
       published.progress = m.session.Progress();
-      published.sim_time_s = robotio::NanosToSeconds(m.simulator.now_ns());
+      published.sim_time_s =
+          m.simulator ? robotio::NanosToSeconds(m.simulator->now_ns())
+                      : robotio::NanosToSeconds(m.replay_ns - m.replay->begin_ns());
       published.auto_driving = !m.script.empty();
       published.driving = m.v != 0.0 || m.omega != 0.0;
       published.depth = m.depth;
@@ -296,7 +348,8 @@ void CalibrationRun::Loop() {
                                       ? std::nullopt
                                       : std::optional<cal::PlaneFit>(kinect.floor.back()));
       }
-      published.collisions = m.simulator.collision_count();
+      published.collisions = m.simulator ? m.simulator->collision_count() : 0;
+      published.replay_fraction = m.replay ? m.replay->fraction() : 0.0;
       std::lock_guard<std::mutex> lock(state_mutex_);
       // Fields the requests own (result, plots, saved file, messages) stay as they are.
       state_.progress = published.progress;
@@ -306,6 +359,7 @@ void CalibrationRun::Loop() {
       state_.depth = std::move(published.depth);
       state_.floor = std::move(published.floor);
       state_.collisions = published.collisions;
+      state_.replay_fraction = published.replay_fraction;
     }
 
     if (!capturing) {

@@ -11,6 +11,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
@@ -18,6 +19,7 @@
 #include <QSpinBox>
 #include <QSplitter>
 #include <QStyle>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <cmath>
 
@@ -82,14 +84,40 @@ CalibrationWorkspace::CalibrationWorkspace(QWidget* parent) : QWidget(parent) {
   poll_timer_.setInterval(200);
   connect(&poll_timer_, &QTimer::timeout, this, &CalibrationWorkspace::Refresh);
   out_dir_ = QDir::home().filePath(QStringLiteral("dynamap-calibration"));
+  ShowSource();
   ShowState();
 }
 
 CalibrationWorkspace::~CalibrationWorkspace() = default;
 
 QWidget* CalibrationWorkspace::MakeSetupGroup() {
-  setup_ = new QGroupBox(tr("Session (simulator)"));
+  setup_ = new QGroupBox(tr("Session"));
   auto* form = new QFormLayout(setup_);
+  setup_form_ = form;
+  source_ = new QComboBox;
+  source_->setObjectName(QStringLiteral("calibration_source"));
+  source_->addItem(tr("Simulator"));
+  source_->addItem(tr("Recording"));
+  source_->setToolTip(tr("Drive the guided sequence in the simulator, or replay a recording "
+                         "of it made on the robot (dynamap record --device)"));
+  form->addRow(tr("Source"), source_);
+  recording_ = new QLineEdit;
+  recording_->setObjectName(QStringLiteral("calibration_recording"));
+  recording_->setPlaceholderText(tr("recording folder of the guided sequence"));
+  recording_row_ = new QWidget;
+  auto* recording_layout = new QHBoxLayout(recording_row_);
+  recording_layout->setContentsMargins(0, 0, 0, 0);
+  recording_layout->addWidget(recording_, 1);
+  auto* browse = new QToolButton;
+  browse->setText(QStringLiteral("…"));
+  browse->setToolTip(tr("Choose a recording folder"));
+  connect(browse, &QToolButton::clicked, this, [this] {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Choose a recording folder"),
+                                                          recording_->text());
+    if (!dir.isEmpty()) recording_->setText(dir);
+  });
+  recording_layout->addWidget(browse);
+  form->addRow(tr("Recording"), recording_row_);
   world_ = new QComboBox;
   for (const QString& file : ResourceFiles(QStringLiteral("worlds"))) {
     world_->addItem(QFileInfo(file).fileName(), file);
@@ -116,6 +144,8 @@ QWidget* CalibrationWorkspace::MakeSetupGroup() {
   pace_->addItem(tr("Real time"), 1.0);
   pace_->addItem(tr("As fast as possible"), 0.0);
   form->addRow(tr("Pace"), pace_);
+  connect(source_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+          [this] { ShowSource(); });
   begin_ = new QPushButton(style()->standardIcon(QStyle::SP_MediaPlay), tr("Begin session"));
   begin_->setObjectName(QStringLiteral("calibration_begin"));
   connect(begin_, &QPushButton::clicked, this, [this] {
@@ -220,6 +250,7 @@ QWidget* CalibrationWorkspace::MakeDriveGroup() {
     grid->addWidget(button, c.row, c.column);
   }
   auto_drive_ = new QPushButton(tr("Drive this step for me"));
+  auto_drive_->setObjectName(QStringLiteral("calibration_drive_step"));
   auto_drive_->setToolTip(tr("The motions the step asks for, stopping when it is complete"));
   connect(auto_drive_, &QPushButton::clicked, this, &CalibrationWorkspace::DriveStep);
   grid->addWidget(auto_drive_, 3, 0, 1, 3);
@@ -227,11 +258,32 @@ QWidget* CalibrationWorkspace::MakeDriveGroup() {
 }
 
 std::vector<QWidget*> CalibrationWorkspace::SetupFields() const {
-  return {world_, rig_, seed_, width_, pace_};
+  return {source_, recording_row_, world_, rig_, seed_, width_, pace_};
+}
+
+bool CalibrationWorkspace::ReplaysRecording() const { return source_->currentIndex() == 1; }
+
+void CalibrationWorkspace::ShowSource() {
+  const bool replay = ReplaysRecording();
+  const auto show_row = [this](QWidget* field, bool visible) {
+    field->setVisible(visible);
+    if (QWidget* label = setup_form_->labelForField(field)) label->setVisible(visible);
+  };
+  show_row(recording_row_, replay);
+  // The room, the simulated rig's seed and the image width belong to the simulator.
+  show_row(world_, !replay);
+  show_row(seed_, !replay);
+  show_row(width_, !replay);
+}
+
+void CalibrationWorkspace::SetRecording(const QString& dir) {
+  source_->setCurrentIndex(1);
+  recording_->setText(dir);
 }
 
 CalibrationSetup CalibrationWorkspace::BuildSetup() const {
   CalibrationSetup setup;
+  if (ReplaysRecording()) setup.recording_dir = recording_->text().trimmed().toStdString();
   setup.world_file = world_->currentData().toString().toStdString();
   setup.rig_guess_file = rig_->currentData().toString().toStdString();
   setup.robot_file = ResourcePath(QStringLiteral("robots/segway_rmp50.yaml")).toStdString();
@@ -294,6 +346,7 @@ void CalibrationWorkspace::EndSession() {
 }
 
 void CalibrationWorkspace::SetWorldFile(const QString& file) {
+  source_->setCurrentIndex(0);
   const QString path = QFileInfo(file).absoluteFilePath();
   int index = world_->findData(path);
   if (index < 0) {
@@ -383,8 +436,10 @@ void CalibrationWorkspace::ShowState() {
                   (done ? QStringLiteral(" ✓") : QString()));
   }
   if (!session) {
-    instruction_->setText(Starting() ? tr("Starting the simulator…")
-                                     : tr("Choose the room and the rig guess, then begin."));
+    instruction_->setText(Starting() ? tr("Starting the session…")
+                                     : ReplaysRecording()
+                                           ? tr("Choose the recording and the rig guess, then begin.")
+                                           : tr("Choose the room and the rig guess, then begin."));
     detail_->clear();
     counters_->clear();
     step_progress_->setValue(0);
@@ -403,7 +458,7 @@ void CalibrationWorkspace::ShowState() {
         tr("Floor fits %1 (last inlier share %2)<br>"
            "Turned %3° left, %4° right<br>Straight %5 m forward, %6 m back<br>"
            "Arcs %7 m left, %8 m right<br>ICP pairs this step %9, rejected %10<br>"
-           "Simulated %11 s%12")
+           "%11 %12 s%13")
             .arg(JoinCounts(p.floor_fits), inlier.join(QStringLiteral(" / ")))
             .arg(p.turned_left_deg, 0, 'f', 0)
             .arg(p.turned_right_deg, 0, 'f', 0)
@@ -412,16 +467,23 @@ void CalibrationWorkspace::ShowState() {
             .arg(p.arc_left_m, 0, 'f', 2)
             .arg(p.arc_right_m, 0, 'f', 2)
             .arg(JoinCounts(p.step_pairs), JoinCounts(p.rejected_pairs))
+            .arg(state_.replay ? tr("Replayed %1 % of the recording,")
+                                     .arg(100.0 * state_.replay_fraction, 0, 'f', 0)
+                               : tr("Simulated"))
             .arg(state_.sim_time_s, 0, 'f', 1)
             .arg(state_.collisions > 0 ? tr(", %1 collisions").arg(state_.collisions) : QString()));
   }
-  drive_->setEnabled(capturing && !state_.solving);
-  auto_drive_->setEnabled(capturing && !state_.auto_driving);
+  drive_->setEnabled(capturing && !state_.solving && !state_.replay);
+  auto_drive_->setEnabled(capturing && !state_.auto_driving && !state_.replay);
   next_->setEnabled(capturing && p.complete);
   skip_->setEnabled(capturing);
   solve_->setEnabled(session && !state_.solving && !reviewing &&
                      p.step != cal::SessionStep::kDone);
-  redo_->setEnabled(reviewing);
+  // A recording cannot be extended: a weak step is recorded again and replayed.
+  redo_->setEnabled(reviewing && !state_.replay);
+  redo_->setToolTip(state_.replay ? tr("A replayed recording cannot be extended: record the "
+                                       "step again and replay the new recording")
+                                  : tr("Capture a step again and solve with the new data"));
   save_->setEnabled(reviewing && !state_.solving);
 
   for (std::size_t k = 0; k < state_.depth.size() && k < 2 && session; ++k) {
@@ -438,7 +500,8 @@ void CalibrationWorkspace::ShowState() {
   }
   if (session && state_.result && state_.result.get() != shown_result_) {
     shown_result_ = state_.result.get();
-    results_->Show(*state_.result, run_->Truth(), run_->TrueScaleLeft(), run_->TrueScaleRight());
+    results_->Show(*state_.result, run_->Guess(), run_->Truth(), run_->TrueScaleLeft(),
+                   run_->TrueScaleRight(), run_->RobotRadius());
   }
   if (session && state_.plots.size() != shown_plots_) {
     shown_plots_ = state_.plots.size();

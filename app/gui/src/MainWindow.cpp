@@ -94,8 +94,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(calibration_, &CalibrationWorkspace::ErrorOccurred, this, &MainWindow::ShowError);
   connect(calibration_, &CalibrationWorkspace::StatusMessage, this,
           [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
-  connect(calibration_, &CalibrationWorkspace::SessionStarted, this,
-          [this] { status_panel_->SetConnection(RobotConnection::kSimulator); });
+  connect(calibration_, &CalibrationWorkspace::SessionStarted, this, [this] {
+    status_panel_->SetConnection(calibration_->ReplaysRecording() ? RobotConnection::kRecording
+                                                                  : RobotConnection::kSimulator);
+  });
 
   CreateActions();
   CreateMenus();

@@ -1,4 +1,5 @@
-// The Calibration workspace: the guided rig calibration against the simulator. It says
+// The Calibration workspace: the guided rig calibration against the simulator or a
+// recording of the guided sequence made on the robot. It says
 // what to do now, shows each step's progress (floor fits and their inlier share, degrees
 // turned, metres driven straight and in arcs, ICP pairs per Kinect), both live depth
 // images with the fitted floor tinted, lets the operator drive (or drive the step for
@@ -17,6 +18,8 @@
 
 class QCheckBox;
 class QComboBox;
+class QFormLayout;
+class QLineEdit;
 class QLabel;
 class QListWidget;
 class QProgressBar;
@@ -40,7 +43,10 @@ class CalibrationWorkspace : public QWidget {
   // Starts a session in the background; ends in SessionStarted or ErrorOccurred.
   void BeginSession(const CalibrationSetup& setup);
   void EndSession();
+  // Selects the simulator in `file`'s room as the source.
   void SetWorldFile(const QString& file);
+  // Selects the recording in folder `dir` as the source.
+  void SetRecording(const QString& dir);
   void SetOutputDir(const QString& dir);
   void SetImageWidth(int width);
   void SetSpeed(double sim_seconds_per_wall_second);
@@ -53,6 +59,8 @@ class CalibrationWorkspace : public QWidget {
   void SaveTo(const QString& file);
 
   [[nodiscard]] bool HasSession() const { return run_ != nullptr; }
+  // The setup names a recording to replay rather than the simulator.
+  [[nodiscard]] bool ReplaysRecording() const;
   [[nodiscard]] bool Starting() const { return start_task_->Running(); }
   [[nodiscard]] const CalibrationState& LastState() const { return state_; }
   [[nodiscard]] const QString& LastMessage() const { return last_message_; }
@@ -71,6 +79,7 @@ class CalibrationWorkspace : public QWidget {
   QWidget* MakeDriveGroup();
   void ShowState();
   [[nodiscard]] std::vector<QWidget*> SetupFields() const;
+  void ShowSource();  // The setup rows that belong to the chosen source.
   void SaveWithDialog();
 
   std::shared_ptr<CalibrationRun> run_;
@@ -83,6 +92,10 @@ class CalibrationWorkspace : public QWidget {
   BackgroundTask* start_task_ = nullptr;
 
   QWidget* setup_ = nullptr;
+  QFormLayout* setup_form_ = nullptr;
+  QComboBox* source_ = nullptr;
+  QWidget* recording_row_ = nullptr;
+  QLineEdit* recording_ = nullptr;
   QComboBox* world_ = nullptr;
   QComboBox* rig_ = nullptr;
   QSpinBox* seed_ = nullptr;
