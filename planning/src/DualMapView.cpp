@@ -6,6 +6,24 @@
 
 namespace dynamap::planning {
 
+GridMap ProjectSavedMap(const mapping::DualOcTree& tree, const ProjectionConfig& config) {
+  if (tree.getRoot() == nullptr) return GridMap();
+  double min_x = 0.0, min_y = 0.0, min_z = 0.0, max_x = 0.0, max_y = 0.0, max_z = 0.0;
+  tree.getMetricMin(min_x, min_y, min_z);
+  tree.getMetricMax(max_x, max_y, max_z);
+  const double resolution = tree.getResolution();
+  GridMap area(static_cast<int>(std::ceil((max_x - min_x) / resolution)),
+               static_cast<int>(std::ceil((max_y - min_y) / resolution)), resolution);
+  area.origin_x_m = min_x;
+  area.origin_y_m = min_y;
+  mapping::MappingConfig mapping;
+  mapping.resolution_m = resolution;
+  const mapping::DualMap map(tree.Clone(), mapping);
+  MapProjector projector(std::move(area), config);
+  (void)projector.ProjectAll(DualMapView(map));
+  return projector.map();
+}
+
 std::vector<Eigen::Vector2f> TouchedColumns(const robotio::DepthRays& rays, const GridMap& area) {
   std::vector<std::uint8_t> touched(area.cells.size(), 0);
   std::vector<Eigen::Vector2f> columns;

@@ -1,6 +1,7 @@
 // The Maps workspace's behaviour: opening files (and the errors that name them), layer
 // toggles, the height slice, colour modes, picking, exports and cancelling a load.
 #include <QFile>
+#include <QImage>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -169,6 +170,33 @@ class MapsWorkspaceTest : public QObject {
     const auto points = mapping::ReadPly(file.toStdString());
     QVERIFY(points.ok());
     QVERIFY(points->size() >= workspace_->Map()->voxels->dynamic_count);
+  }
+
+  // The office scene's floor and walls as a ROS map_server map: a .yaml naming its .pgm,
+  // free floor white and the walls black.
+  void ExportsRosMapServerMap() {
+    OpenAndWait(*workspace_, WriteOfficeScene(dir_->path()));
+    const QString yaml = dir_->filePath(QStringLiteral("office.yaml"));
+    QSignalSpy finished(workspace_.get(), &MapsWorkspace::ExportFinished);
+    workspace_->Export(ExportKind::kRosMap, yaml);
+    QTRY_VERIFY_WITH_TIMEOUT(!workspace_->Busy(), kWorkTimeoutMs);
+    QCOMPARE(finished.count(), 1);
+    QFile text(yaml);
+    QVERIFY(text.open(QIODevice::ReadOnly));
+    const QString contents = QString::fromUtf8(text.readAll());
+    QVERIFY2(contents.contains(QStringLiteral("image: office.pgm")), qPrintable(contents));
+    QVERIFY(contents.contains(QStringLiteral("resolution: 0.05")));
+    const QImage pgm(dir_->filePath(QStringLiteral("office.pgm")));
+    QVERIFY(!pgm.isNull());
+    int free = 0, occupied = 0;
+    for (int y = 0; y < pgm.height(); ++y) {
+      for (int x = 0; x < pgm.width(); ++x) {
+        const int grey = qGray(pgm.pixel(x, y));
+        free += grey > 250 ? 1 : 0;
+        occupied += grey < 5 ? 1 : 0;
+      }
+    }
+    QVERIFY2(free > 100 && occupied > 20, qPrintable(QStringLiteral("%1 free, %2 occupied").arg(free).arg(occupied)));
   }
 
   void ExportErrorNamesTheFile() {

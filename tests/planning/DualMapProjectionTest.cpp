@@ -49,6 +49,22 @@ TEST(DualMapProjection, FloorIsNavigableWallIsObstacleUnseenIsUnknown) {
   EXPECT_TRUE(projector.Update(view, touched).empty());
 }
 
+TEST(DualMapProjection, ASavedMapProjectsOverItsOwnExtent) {
+  mapping::DualMap map(mapping::MappingConfig{});
+  const Eigen::Vector3f origin(0.0f, 0.0f, 0.6f);
+  for (int i = 0; i < 3; ++i) map.InsertPointCloud(FloorAndWall(), origin);
+  const GridMap grid = ProjectSavedMap(map.tree(), ProjectionConfig{});
+  ASSERT_FALSE(grid.cells.empty());
+  EXPECT_DOUBLE_EQ(grid.resolution_m, map.tree().getResolution());
+  // The extent of what was seen: from the sensor's column to the wall, |y| ≤ 1.
+  EXPECT_LE(grid.origin_x_m, 0.0);
+  EXPECT_GE(grid.origin_x_m + grid.width * grid.resolution_m, 2.0);
+  EXPECT_LE(grid.origin_y_m, -0.95);
+  EXPECT_EQ(grid.At(grid.CellAt(1.0, 0.3)), CellState::kNavigable);
+  EXPECT_EQ(grid.At(grid.CellAt(2.02, 0.0)), CellState::kObstacle);
+  EXPECT_TRUE(ProjectSavedMap(mapping::DualOcTree(0.05), ProjectionConfig{}).cells.empty());
+}
+
 TEST(DualMapProjection, TouchedColumnsFollowTheRaysFootprint) {
   GridMap area(40, 40, 0.1);
   robotio::DepthRays rays;

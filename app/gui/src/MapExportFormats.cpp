@@ -1,10 +1,13 @@
 #include "dynamap/app/gui/MapExportFormats.hpp"
 
 #include <cassert>
+#include <filesystem>
 
+#include "dynamap/app/runtime/MissionOutputs.hpp"
 #include "dynamap/mapping/MapExport.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
 #include "dynamap/mapping/PointCloudFiles.hpp"
+#include "dynamap/planning/DualMapView.hpp"
 
 namespace dynamap::app::gui {
 
@@ -23,6 +26,8 @@ const std::vector<ExportFormat>& ExportFormats() {
       {ExportKind::kDynamicPcd, "Dynamic voxels as point cloud (.pcd)…",
        "PCD point cloud (*.pcd)", "pcd"},
       {ExportKind::kTopDownPng, "Top-down image (.png)…", "PNG image (*.png)", "png"},
+      {ExportKind::kRosMap, "2D map for ROS map_server (.yaml + .pgm)…",
+       "ROS map (*.yaml)", "yaml"},
   };
   return kFormats;
 }
@@ -53,6 +58,13 @@ robotio::Status ExportMap(const mapping::DualOcTree& tree, ExportKind kind,
       return mapping::WritePcd(mapping::OccupiedVoxelCentres(tree, MapChannel::kDynamic), file);
     case ExportKind::kTopDownPng:
       return mapping::WriteTopDownPng(tree, file);
+    case ExportKind::kRosMap: {
+      const planning::GridMap grid = planning::ProjectSavedMap(tree, planning::ProjectionConfig{});
+      if (grid.cells.empty()) return robotio::Error{file + ": the map is empty, no 2D map to write"};
+      std::filesystem::path pgm(file);
+      pgm.replace_extension(".pgm");
+      return runtime::WriteRosMap(grid, pgm.string(), file);
+    }
   }
   return robotio::Error{"unknown export kind for " + file};
 }

@@ -39,6 +39,13 @@ class DualMapView : public VoxelMapView {
   const mapping::DualMap& map_;
 };
 
+// A whole saved dual map (a loaded .ot, or a plain .bt as its static channel) projected
+// over the x/y extent of its known voxels at its own resolution, the floor at map z = 0
+// as in every dynamap map: what it looks like to the planner, e.g. for a ROS map_server
+// export. An empty tree gives an empty grid.
+[[nodiscard]] GridMap ProjectSavedMap(const mapping::DualOcTree& tree,
+                                      const ProjectionConfig& config);
+
 // Centres (map frame x, y) of the grid columns the rays of one scan pass through, each
 // once: what MapProjector::Update needs after DualMap::InsertRays with the same rays.
 [[nodiscard]] std::vector<Eigen::Vector2f> TouchedColumns(const robotio::DepthRays& rays,

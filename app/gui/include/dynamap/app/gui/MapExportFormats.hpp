@@ -1,5 +1,6 @@
-// The exports the Maps workspace offers, each a call into dynamap::mapping's file code:
-// one channel as an OctoMap .bt or as voxel centres in .ply/.pcd, and the top-down PNG.
+// The exports the Maps workspace offers, each a call into the core libraries' file code:
+// one channel as an OctoMap .bt or as voxel centres in .ply/.pcd, the top-down PNG, and
+// the projected 2D map for ROS map_server (.yaml beside a .pgm).
 #pragma once
 
 #include <string>
@@ -18,6 +19,7 @@ enum class ExportKind {
   kStaticPcd,
   kDynamicPcd,
   kTopDownPng,
+  kRosMap,
 };
 
 struct ExportFormat {
