@@ -15,6 +15,7 @@
 #include "cli/Interrupt.hpp"
 #include "cli/ProgressLine.hpp"
 #include "dynamap/app/runtime/MissionRuntime.hpp"
+#include "dynamap/app/runtime/RobotSources.hpp"
 #include "dynamap/mapping/SlamLoop.hpp"
 #include "dynamap/planning/PlanningConfig.hpp"
 
@@ -87,36 +88,10 @@ runtime::MissionConfig ConfigFor(const ExploreOptions& options) {
   return config;
 }
 
-// What the pad said last, for the progress line and the end of the mission.
-struct PadState {
-  std::atomic<bool> held{false};    // LB, the dead-man button.
-  std::atomic<bool> finish{false};  // Start was pressed.
-};
-
-// The real robot's devices as the mission's sensor sources.
-runtime::DeviceSources SourcesFrom(robotio::hardware::RecordingDevices& devices,
-                                   std::shared_ptr<PadState> pad_state) {
-  runtime::DeviceSources sources;
-  sources.base = devices.base.get();
-  sources.imu = devices.imu.get();
-  for (std::size_t i = 0; i < devices.cameras.size(); ++i) {
-    sources.cameras.push_back({devices.cameras[i].get(), devices.camera_names[i]});
-  }
-  robotio::hardware::GamepadTeleop* pad = &*devices.pad;
-  sources.deadman = [pad, pad_state](std::chrono::milliseconds wait) -> robotio::Expected<bool> {
-    auto state = pad->Update(wait);
-    if (!state) return state.error();
-    if (state->finish_requested) pad_state->finish = true;
-    pad_state->held = state->deadman_held;
-    return state->deadman_held;
-  };
-  return sources;
-}
-
 void Run(const ExploreOptions& options) {
   const runtime::MissionConfig config = ConfigFor(options);
   std::optional<robotio::hardware::RecordingDevices> devices;
-  auto pad_state = std::make_shared<PadState>();
+  auto pad_state = std::make_shared<runtime::PadState>();
   robotio::Expected<std::unique_ptr<runtime::MissionRuntime>> runtime = [&] {
     if (!options.replay.empty()) {
       runtime::MissionConfig replay = config;
@@ -133,7 +108,7 @@ void Run(const ExploreOptions& options) {
     device_options.width = options.kinect_width;
     const robotio::Rig rig = LoadDeviceRig("explore", device_options);
     devices = OpenRobotDevices("explore", device_options, rig);
-    return runtime::MissionRuntime::CreateOnDevices(config, SourcesFrom(*devices, pad_state));
+    return runtime::MissionRuntime::CreateOnDevices(config, runtime::SourcesFromRobot(*devices, pad_state));
   }();
   if (!runtime) FailCommand("explore", runtime.error().message);
 

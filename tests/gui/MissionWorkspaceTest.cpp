@@ -181,6 +181,34 @@ class MissionWorkspaceTest : public QObject {
              qPrintable(errors.at(0).at(0).toString()));
   }
 
+  // The real robot as the source: its devices are opened before anything runs, and a
+  // missing one fails the start with its name (the runtime on emulated devices is
+  // HardwareMissionTest's).
+  void RobotThatIsNotConnectedFailsNamingTheDevice() {
+    QTemporaryDir dir;
+    MissionWorkspace workspace;
+    RobotSetup robot;
+    robot.rmp_port = "/dev/ttyUSB-dynamap-missing";
+    robot.pad = "/dev/input/js-dynamap-missing";
+    workspace.Panel()->SetRobot(robot);
+    workspace.Panel()->SetOutputDir(dir.filePath(QStringLiteral("run")));
+    const runtime::MissionConfig config = workspace.Panel()->BuildConfig();
+    QVERIFY(config.world_file.empty() && config.recording_dir.empty());
+    const auto setup = workspace.Panel()->BuildRobotSetup();
+    QVERIFY(setup.has_value());
+    QCOMPARE(QString::fromStdString(setup->rmp_port), QStringLiteral("/dev/ttyUSB-dynamap-missing"));
+    QVERIFY(setup->imu_port.empty());  // No gyro.
+    QSignalSpy errors(&workspace, &MissionWorkspace::ErrorOccurred);
+    QVERIFY(workspace.StartMission());
+    QTRY_COMPARE_WITH_TIMEOUT(workspace.Session()->Phase(), MissionPhase::kFailed, 10000);
+    QCOMPARE(errors.count(), 1);
+    const QString message = errors.at(0).at(0).toString();
+    QVERIFY2(message.contains(QStringLiteral("Segway RMP")) &&
+                 message.contains(QStringLiteral("/dev/ttyUSB-dynamap-missing")),
+             qPrintable(message));
+    QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("run/map.ot"))));
+  }
+
   void GridPictureIsNorthUpWithOneColourPerState() {
     auto grid = std::make_shared<planning::GridMap>(3, 2, 0.05);
     grid->Set({0, 0}, planning::CellState::kNavigable);

@@ -84,9 +84,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   statusBar()->addPermanentWidget(status_panel_);
   connect(mission_, &MissionWorkspace::StatusChanged, this,
           [this](const QString& state, std::optional<std::uint64_t> dropped) {
-            status_panel_->SetConnection(mission_->Session()->Config().recording_dir.empty()
-                                             ? RobotConnection::kSimulator
-                                             : RobotConnection::kRecording);
+            const auto& config = mission_->Session()->Config();
+            status_panel_->SetConnection(
+                !config.recording_dir.empty() ? RobotConnection::kRecording
+                : config.world_file.empty()   ? RobotConnection::kHardware
+                                              : RobotConnection::kSimulator);
             status_panel_->SetMissionState(state);
             status_panel_->SetDroppedFrames(dropped);
           });

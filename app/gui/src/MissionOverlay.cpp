@@ -98,6 +98,7 @@ MissionOverlay::MissionOverlay(vtkRenderer* renderer, double robot_radius_m)
   goal_mapper->SetInputConnection(sphere->GetOutputPort());
   goal_ = MakeActor(goal_mapper, 0.86, 0.12, 0.63);
   goal_->VisibilityOff();
+  robot_->VisibilityOff();  // Until the mission reports a pose: before, the camera is unplaced.
 
   for (vtkActor* actor : {robot_.Get(), trail_.Get(), path_.Get(), goal_.Get()}) {
     renderer->AddActor(actor);
@@ -111,6 +112,7 @@ MissionOverlay::~MissionOverlay() {
 }
 
 void MissionOverlay::SetRobot(const robotio::Pose2D& pose) {
+  robot_->VisibilityOn();
   robot_->SetPosition(pose.x, pose.y, 0.0);
   robot_->SetOrientation(0.0, 0.0, pose.theta * 180.0 / M_PI);
 }

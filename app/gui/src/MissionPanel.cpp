@@ -22,6 +22,9 @@
 #include <functional>
 
 #include "dynamap/app/gui/ResourceFiles.hpp"
+#include "dynamap/robotio/hardware/GamepadTeleop.hpp"
+#include "dynamap/robotio/hardware/RmpDriver.hpp"
+#include "dynamap/robotio/hardware/XsensImu.hpp"
 
 namespace dynamap::app::gui {
 
@@ -32,6 +35,11 @@ QLabel* Value() {
   label->setTextInteractionFlags(Qt::TextSelectableByMouse);
   label->setWordWrap(true);  // Long values wrap rather than widen the panel.
   return label;
+}
+
+// A figure, or "–" when it is not known (NaN: no ground truth on the robot).
+QString Figure(double value, int decimals, double scale = 1.0) {
+  return std::isfinite(value) ? QString::number(value * scale, 'f', decimals) : QStringLiteral("–");
 }
 
 // File lists show short names; a long one must not widen the panel.
@@ -85,6 +93,7 @@ MissionPanel::MissionPanel(QWidget* parent) : QWidget(parent) {
   connect(stop_, &QPushButton::clicked, this, &MissionPanel::StopRequested);
 
   layout->addWidget(MakeFiguresGroup());
+  ShowDeadman(std::nullopt);
   auto* report_box = new QGroupBox(tr("Report"));
   auto* report_layout = new QVBoxLayout(report_box);
   report_ = new QLabel(tr("Shown when the mission has ended."));
@@ -117,8 +126,10 @@ QWidget* MissionPanel::MakeSetupGroup() {
   source_->setObjectName(QStringLiteral("mission_source"));
   source_->addItem(tr("Simulated world"));
   source_->addItem(tr("Recording"));
-  source_->setToolTip(tr("Explore a simulated world, or replay a recording through the "
-                         "mission (mapping and planning run; the robot is not steered)"));
+  source_->addItem(tr("Real robot"));
+  source_->setToolTip(tr("Explore a simulated world; replay a recording through the mission "
+                         "(mapping and planning run, the robot is not steered); or explore "
+                         "with the real robot, which moves only while the pad's LB is held"));
   form->addRow(tr("Source"), source_);
   world_ = new QComboBox;
   FillFiles(world_, ResourceFiles(QStringLiteral("worlds")), QStringLiteral("office.yaml"));
@@ -135,6 +146,23 @@ QWidget* MissionPanel::MakeSetupGroup() {
     if (!dir.isEmpty()) recording_->setText(dir);
   });
   form->addRow(tr("Recording"), recording_row_);
+  robot_box_ = new QWidget;
+  auto* robot_form = new QFormLayout(robot_box_);
+  robot_form->setContentsMargins(0, 0, 0, 0);
+  rmp_port_ = new QLineEdit(QString::fromStdString(robotio::hardware::RmpConfig{}.device));
+  rmp_port_->setObjectName(QStringLiteral("mission_rmp_port"));
+  imu_port_ = new QLineEdit(QString::fromStdString(robotio::hardware::XsensImuConfig{}.device));
+  imu_port_->setPlaceholderText(tr("none: heading from the wheels"));
+  pad_ = new QLineEdit(QString::fromStdString(robotio::hardware::GamepadConfig{}.device));
+  cameras_ = new QLineEdit;
+  cameras_->setPlaceholderText(tr("serial:XYZ, serial:ABC (one per rig Kinect)"));
+  cameras_->setToolTip(tr("One per Kinect of the rig, in rig order: an OpenNI2 URI, serial:XYZ "
+                          "or N for the N-th camera OpenNI2 lists; empty for a one-Kinect rig"));
+  robot_form->addRow(tr("RMP port"), rmp_port_);
+  robot_form->addRow(tr("Gyro port"), imu_port_);
+  robot_form->addRow(tr("Gamepad"), pad_);
+  robot_form->addRow(tr("Kinects"), cameras_);
+  form->addRow(robot_box_);
   rig_ = new QComboBox;
   rig_->addItem(tr("As recorded"), QString());
   FillFiles(rig_, ResourceFiles(QStringLiteral("rigs")), QStringLiteral("two_kinects.yaml"));
@@ -181,6 +209,29 @@ QWidget* MissionPanel::MakeSetupGroup() {
 }
 
 bool MissionPanel::ReplaysRecording() const { return source_->currentIndex() == 1; }
+bool MissionPanel::RunsOnRobot() const { return source_->currentIndex() == 2; }
+
+std::optional<RobotSetup> MissionPanel::BuildRobotSetup() const {
+  if (!RunsOnRobot()) return std::nullopt;
+  RobotSetup setup;
+  setup.rmp_port = rmp_port_->text().trimmed().toStdString();
+  setup.imu_port = imu_port_->text().trimmed().toStdString();
+  setup.pad = pad_->text().trimmed().toStdString();
+  for (const QString& camera : cameras_->text().split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+    if (!camera.trimmed().isEmpty()) setup.cameras.push_back(camera.trimmed().toStdString());
+  }
+  return setup;
+}
+
+void MissionPanel::SetRobot(const RobotSetup& setup) {
+  source_->setCurrentIndex(2);
+  rmp_port_->setText(QString::fromStdString(setup.rmp_port));
+  imu_port_->setText(QString::fromStdString(setup.imu_port));
+  pad_->setText(QString::fromStdString(setup.pad));
+  QStringList cameras;
+  for (const std::string& c : setup.cameras) cameras << QString::fromStdString(c);
+  cameras_->setText(cameras.join(QStringLiteral(", ")));
+}
 
 void MissionPanel::ShowSource() {
   const bool replay = ReplaysRecording();
@@ -188,23 +239,29 @@ void MissionPanel::ShowSource() {
     field->setVisible(visible);
     if (QWidget* label = setup_form_->labelForField(field)) label->setVisible(visible);
   };
-  show_row(world_row_, !replay);
+  const bool robot = RunsOnRobot();
+  show_row(world_row_, !replay && !robot);
   show_row(recording_row_, replay);
-  // A replay has the recorded images and rig; a simulation needs a rig file.
+  robot_box_->setVisible(robot);
+  // A replay has the recorded images and rig; a simulation needs a rig file; the robot
+  // runs in real time.
   kinect_size_->setEnabled(!replay);
+  pace_->setEnabled(!robot);
   if (replay) {
     rig_->setCurrentIndex(0);
   } else if (rig_->currentData().toString().isEmpty()) {
     rig_->setCurrentIndex(std::max(0, rig_->findText(QStringLiteral("two_kinects.yaml"))));
   }
-  time_limit_->setToolTip(replay ? tr("Recorded time after which the replay is ended (at "
-                                      "most the recording's length)")
-                                 : tr("Simulated time after which the mission is ended"));
+  time_limit_->setToolTip(replay  ? tr("Recorded time after which the replay is ended (at "
+                                       "most the recording's length)")
+                          : robot ? tr("Time after which the mission on the robot is ended")
+                                  : tr("Simulated time after which the mission is ended"));
 }
 
 QWidget* MissionPanel::MakeFiguresGroup() {
   auto* box = new QGroupBox(tr("Live"));
   auto* form = new QFormLayout(box);
+  figures_form_ = form;
   state_ = Value();
   sim_time_ = Value();
   distance_ = Value();
@@ -220,7 +277,9 @@ QWidget* MissionPanel::MakeFiguresGroup() {
   progress_->setRange(0, 1000);
   progress_->setValue(0);
   progress_->setFormat(QStringLiteral("–"));
+  deadman_ = Value();
   form->addRow(tr("State"), state_);
+  form->addRow(tr("Dead-man (LB)"), deadman_);
   form->addRow(tr("Progress"), progress_);
   form->addRow(tr("Mission time"), sim_time_);
   form->addRow(tr("Distance driven"), distance_);
@@ -245,7 +304,7 @@ runtime::MissionConfig MissionPanel::BuildConfig() const {
   runtime::MissionConfig config;
   if (ReplaysRecording()) {
     config.recording_dir = recording_->text().trimmed().toStdString();
-  } else {
+  } else if (!RunsOnRobot()) {
     config.world_file = world_->currentData().toString().toStdString();
   }
   config.rig_file = rig_->currentData().toString().toStdString();
@@ -342,7 +401,7 @@ void MissionPanel::ShowReport(const std::optional<runtime::MissionReport>& repor
   if (!report) return;
   const runtime::MissionReport& r = *report;
   report_->setText(
-      tr("<b>%1</b> after %2 s simulated<br>"
+      tr("<b>%1</b> after %2 s<br>"
          "explored free area %3 %, surfaces %4 %<br>"
          "path %5 m, collisions %6<br>"
          "ATE %7 m (odometry alone %8 m)<br>"
@@ -351,18 +410,27 @@ void MissionPanel::ShowReport(const std::optional<runtime::MissionReport>& repor
          "results in <tt>%14</tt>")
           .arg(r.completed ? tr("Exploration complete") : tr("Mission ended"))
           .arg(r.mission_time_s, 0, 'f', 1)
-          .arg(100.0 * r.explored_free_fraction, 0, 'f', 1)
-          .arg(100.0 * r.surface_coverage, 0, 'f', 1)
+          .arg(Figure(r.explored_free_fraction, 1, 100.0))
+          .arg(Figure(r.surface_coverage, 1, 100.0))
           .arg(r.path_length_m, 0, 'f', 2)
           .arg(r.collisions)
-          .arg(r.ate_rmse_m, 0, 'f', 3)
-          .arg(r.odometry_ate_rmse_m, 0, 'f', 3)
-          .arg(r.static_accuracy, 0, 'f', 3)
-          .arg(r.dynamic_accuracy, 0, 'f', 3)
-          .arg(r.associated_accuracy, 0, 'f', 3)
+          .arg(Figure(r.ate_rmse_m, 3))
+          .arg(Figure(r.odometry_ate_rmse_m, 3))
+          .arg(Figure(r.static_accuracy, 3))
+          .arg(Figure(r.dynamic_accuracy, 3))
+          .arg(Figure(r.associated_accuracy, 3))
           .arg(r.frames_processed)
           .arg(r.frames_dropped)
           .arg(out_dir.toHtmlEscaped()));
+}
+
+void MissionPanel::ShowDeadman(std::optional<bool> held) {
+  deadman_->setVisible(held.has_value());
+  if (QWidget* label = figures_form_->labelForField(deadman_)) label->setVisible(held.has_value());
+  if (held) {
+    deadman_->setText(*held ? tr("held: the base follows the planner")
+                            : tr("released: the base is held still"));
+  }
 }
 
 QString MissionPanel::FiguresText() const {

@@ -3,6 +3,8 @@
 #include <QFileInfo>
 
 #include "dynamap/app/runtime/MissionRuntime.hpp"
+#include "dynamap/app/runtime/RobotSources.hpp"
+#include "dynamap/robotio/Rig.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
 
 namespace dynamap::app::gui {
@@ -45,7 +47,46 @@ MissionSession::~MissionSession() {
   // threads, which leave within one cycle once stopped.
 }
 
-bool MissionSession::Start(runtime::MissionConfig config) {
+namespace {
+
+// Opens the robot's devices for `config` (rig, depth mode) and creates the mission on them;
+// the returned runtime keeps the devices open until it is destroyed.
+robotio::Expected<std::shared_ptr<runtime::MissionRuntime>> CreateOnRobot(
+    const runtime::MissionConfig& config, const RobotSetup& setup,
+    const std::shared_ptr<runtime::PadState>& pad_state) {
+  namespace hw = robotio::hardware;
+  auto rig = robotio::LoadRig(config.rig_file);
+  if (!rig) return rig.error();
+  for (auto& mount : rig->kinects) {
+    mount.intrinsics = mount.intrinsics.Scaled(config.kinect_width, config.kinect_height);
+  }
+  hw::DriveDevicesConfig drive;
+  drive.rmp.device = setup.rmp_port;
+  if (!setup.imu_port.empty()) {
+    drive.imu.emplace();
+    drive.imu->device = setup.imu_port;
+  }
+  drive.pad.device = setup.pad;
+  auto opened = hw::OpenDriveDevices(drive);
+  if (!opened) return opened.error();
+  auto devices = std::make_shared<hw::RecordingDevices>(std::move(opened).value());
+  auto cameras = hw::CameraConfigsForRig(*rig, setup.cameras);
+  if (!cameras) return cameras.error();
+  auto open_cameras = hw::OpenRecordingCameras(*cameras);
+  if (!open_cameras) return open_cameras.error();
+  devices->cameras = std::move(open_cameras).value();
+  for (const auto& c : *cameras) devices->camera_names.push_back(c.name);
+  auto created = runtime::MissionRuntime::CreateOnDevices(
+      config, runtime::SourcesFromRobot(*devices, pad_state));
+  if (!created) return created.error();
+  // The devices are released after the runtime that reads them.
+  return std::shared_ptr<runtime::MissionRuntime>(
+      created.value().release(), [devices](runtime::MissionRuntime* r) { delete r; });
+}
+
+}  // namespace
+
+bool MissionSession::Start(runtime::MissionConfig config, std::optional<RobotSetup> robot) {
   if (phase_ != MissionPhase::kIdle && phase_ != MissionPhase::kFinished &&
       phase_ != MissionPhase::kFailed) {
     return false;
@@ -59,12 +100,20 @@ bool MissionSession::Start(runtime::MissionConfig config) {
   map_copy_requested_.invalidate();
   snapshot_ = runtime::MissionSnapshot();
   last_error_.clear();
+  pad_state_ = robot ? std::make_shared<runtime::PadState>() : nullptr;
   SetPhase(MissionPhase::kStarting);
   emit SnapshotUpdated();
   emit MapUpdated();
-  lifecycle_task_->Start(tr("Starting mission"), [this, config = config_](
+  lifecycle_task_->Start(tr("Starting mission"), [this, config = config_, robot,
+                                                  pad_state = pad_state_](
                                                      const BackgroundTask::Context& context) {
-    auto created = runtime::MissionRuntime::Create(config);
+    robotio::Expected<std::shared_ptr<runtime::MissionRuntime>> created =
+        robot ? CreateOnRobot(config, *robot, pad_state)
+              : [&]() -> robotio::Expected<std::shared_ptr<runtime::MissionRuntime>> {
+                  auto made = runtime::MissionRuntime::Create(config);
+                  if (!made) return made.error();
+                  return std::shared_ptr<runtime::MissionRuntime>(std::move(made).value());
+                }();
     if (!created) {
       const QString message = QString::fromStdString(created.error().message);
       context.Deliver([this, message] { Fail(message); });
@@ -79,6 +128,11 @@ bool MissionSession::Start(runtime::MissionConfig config) {
     });
   });
   return true;
+}
+
+std::optional<bool> MissionSession::DeadmanHeld() const {
+  if (!pad_state_) return std::nullopt;
+  return pad_state_->held.load();
 }
 
 bool MissionSession::Pause() {
@@ -120,6 +174,7 @@ void MissionSession::Fail(const QString& message) {
 
 void MissionSession::Poll() {
   if (!runtime_ || (phase_ != MissionPhase::kRunning && phase_ != MissionPhase::kPaused)) return;
+  if (pad_state_ && pad_state_->finish.exchange(false)) runtime_->Stop();  // Start on the pad.
   snapshot_ = runtime_->Snapshot();
   emit SnapshotUpdated();
   UpdateLiveMap();
@@ -178,14 +233,20 @@ void MissionSession::BeginFinish() {
                                                         const BackgroundTask::Context& context) {
     auto report = runtime->Finish();  // Joins the runtime's threads, scores, writes files.
     const runtime::MissionSnapshot last = runtime->Snapshot();
+    const std::optional<std::string> device_error = runtime->device_error();
     if (!report) {
       const QString message = QString::fromStdString(report.error().message);
       context.Deliver([this, message] { Fail(message); });
       return;
     }
-    context.Deliver([this, last, r = *report] {
+    context.Deliver([this, last, r = *report, device_error] {
       snapshot_ = last;
       report_ = r;
+      if (device_error) {
+        last_error_ = QString::fromStdString(*device_error);
+        emit ErrorOccurred(tr("%1; the base was stopped and the maps so far are saved")
+                               .arg(last_error_));
+      }
       SetPhase(MissionPhase::kFinished);
       emit SnapshotUpdated();
       map_loaded_time_ = QDateTime();  // Finish() wrote the final map.

@@ -81,14 +81,18 @@ bool MissionWorkspace::StartMission() {
     overlay_ = std::make_unique<MissionOverlay>(view_->Renderer(), robot->footprint_radius_m);
   }
   upside_down_.clear();
-  if (auto rig = robotio::LoadRig(config.rig_file)) {
+  // A replay with its recorded rig reads the recording's rig file.
+  const std::string rig_file = config.rig_file.empty() && !config.recording_dir.empty()
+                                   ? config.recording_dir + "/rig.yaml"
+                                   : config.rig_file;
+  if (auto rig = robotio::LoadRig(rig_file)) {
     for (const auto& mount : rig->kinects) {
       upside_down_.push_back(std::abs(robotio::MountRollPitchYaw(mount.T_base_kinect).x()) >
                              M_PI / 2);
     }
   }
   camera_placed_ = false;
-  return session_->Start(std::move(config));
+  return session_->Start(std::move(config), panel_->BuildRobotSetup());
 }
 
 bool MissionWorkspace::Explore(const ExploreRequest& request) {
@@ -119,6 +123,7 @@ void MissionWorkspace::OnPhaseChanged(MissionPhase phase) {
 void MissionWorkspace::OnSnapshot() {
   const runtime::MissionSnapshot& s = session_->Snapshot();
   panel_->ShowSnapshot(s);
+  panel_->ShowDeadman(session_->DeadmanHeld());
   GridScene scene;
   scene.grid = s.grid;
   scene.pose = s.pose;
@@ -139,7 +144,8 @@ void MissionWorkspace::OnSnapshot() {
     depth0_->Clear();
     depth1_->Clear();
   }
-  overlay_->SetRobot(s.pose);
+  // The robot is drawn once the mission has a map to place the camera on.
+  if (s.grid) overlay_->SetRobot(s.pose);
   overlay_->SetTrail(s.trail);
   overlay_->SetPath(s.path);
   overlay_->SetGoal(s.has_goal, s.goal);

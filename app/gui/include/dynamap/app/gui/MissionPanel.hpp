@@ -1,5 +1,5 @@
-// The left panel of the Mission workspace: what to run (a simulated world or a recording
-// to replay, rig, pose source, Kinect resolution, time limit, pace, map save period,
+// The left panel of the Mission workspace: what to run (a simulated world, a recording
+// to replay or the real robot's devices, rig, pose source, Kinect resolution, time limit, pace, map save period,
 // results folder), Start / Pause / Resume / Stop, the live figures of the running mission
 // (with a progress bar through the time limit or the recording) and the report when it
 // has ended.
@@ -37,6 +37,10 @@ class MissionPanel : public QWidget {
   void SetWorldFile(const QString& file);
   // Selects the recording folder `dir` as the source.
   void SetRecording(const QString& dir);
+  // Selects the real robot with these devices as the source.
+  void SetRobot(const RobotSetup& setup);
+  // The devices when the source is the real robot; nullopt otherwise.
+  [[nodiscard]] std::optional<RobotSetup> BuildRobotSetup() const;
   void SetRigFile(const QString& file);
   void SetPoseSource(runtime::PoseSource source);
   void SetKinectSize(int width, int height);
@@ -48,6 +52,8 @@ class MissionPanel : public QWidget {
   void ShowPhase(MissionPhase phase);
   void ShowSnapshot(const runtime::MissionSnapshot& snapshot);
   void ShowReport(const std::optional<runtime::MissionReport>& report, const QString& out_dir);
+  // On the real robot: the pad's dead-man button (nullopt hides the row).
+  void ShowDeadman(std::optional<bool> held);
 
   [[nodiscard]] QPushButton* StartButton() const { return start_; }
   [[nodiscard]] QPushButton* PauseButton() const { return pause_; }
@@ -66,6 +72,7 @@ class MissionPanel : public QWidget {
   QWidget* MakeFiguresGroup();
   void BrowseFile(QComboBox* combo, const QString& title);
   [[nodiscard]] bool ReplaysRecording() const;
+  [[nodiscard]] bool RunsOnRobot() const;
   void ShowSource();  // The rows that belong to the chosen source.
 
   QWidget* setup_ = nullptr;
@@ -74,6 +81,11 @@ class MissionPanel : public QWidget {
   QWidget* world_row_ = nullptr;
   QWidget* recording_row_ = nullptr;
   QLineEdit* recording_ = nullptr;
+  QWidget* robot_box_ = nullptr;
+  QLineEdit* rmp_port_ = nullptr;
+  QLineEdit* imu_port_ = nullptr;
+  QLineEdit* pad_ = nullptr;
+  QLineEdit* cameras_ = nullptr;
   QComboBox* world_ = nullptr;
   QComboBox* rig_ = nullptr;
   QComboBox* poses_ = nullptr;
@@ -95,6 +107,8 @@ class MissionPanel : public QWidget {
   QLabel* target_ = nullptr;
   QLabel* command_ = nullptr;
   QLabel* explored_ = nullptr;
+  QLabel* deadman_ = nullptr;
+  QFormLayout* figures_form_ = nullptr;
   QLabel* ate_ = nullptr;
   QProgressBar* progress_ = nullptr;
   QLabel* report_ = nullptr;

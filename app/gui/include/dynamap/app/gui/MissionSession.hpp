@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "dynamap/app/gui/BackgroundTask.hpp"
 #include "dynamap/app/gui/VoxelSet.hpp"
@@ -21,6 +23,7 @@
 
 namespace dynamap::app::runtime {
 class MissionRuntime;
+struct PadState;
 }
 
 namespace dynamap::app::gui {
@@ -37,6 +40,15 @@ enum class MissionPhase {
 
 [[nodiscard]] QString PhaseName(MissionPhase phase);
 
+// The real robot's devices for a mission on it (the "Real robot" source).
+struct RobotSetup {
+  std::string rmp_port;              // Segway RMP serial device.
+  std::string imu_port;              // Xsens gyro serial device; empty: no gyro.
+  std::string pad;                   // Joystick device of the gamepad (dead-man button).
+  std::vector<std::string> cameras;  // One per rig Kinect: URI, serial:XYZ or index; empty
+                                     // for a one-Kinect rig: the only camera connected.
+};
+
 class MissionSession : public QObject {
   Q_OBJECT
 
@@ -45,8 +57,9 @@ class MissionSession : public QObject {
   // Stops a running mission and waits for its threads (they leave within one cycle).
   ~MissionSession() override;
 
-  // From idle, finished or failed. Returns false (and changes nothing) otherwise.
-  bool Start(runtime::MissionConfig config);
+  // From idle, finished or failed. Returns false (and changes nothing) otherwise. With
+  // `robot`, the devices are opened (off the GUI thread) and the mission runs on them.
+  bool Start(runtime::MissionConfig config, std::optional<RobotSetup> robot = std::nullopt);
   bool Pause();
   bool Resume();
   // Ends a starting, running or paused mission; results are still scored and written.
@@ -58,6 +71,8 @@ class MissionSession : public QObject {
   [[nodiscard]] const runtime::MissionConfig& Config() const { return config_; }
   [[nodiscard]] std::shared_ptr<const VoxelSet> Map() const { return map_; }
   [[nodiscard]] const QString& LastError() const { return last_error_; }
+  // On the real robot: whether the pad's dead-man button is held now.
+  [[nodiscard]] std::optional<bool> DeadmanHeld() const;
   // Snapshot period, ms (default 250: 4 Hz).
   void SetPollInterval(int ms) { poll_timer_.setInterval(ms); }
 
@@ -79,7 +94,8 @@ class MissionSession : public QObject {
   void BeginFinish();
 
   runtime::MissionConfig config_;
-  std::shared_ptr<runtime::MissionRuntime> runtime_;
+  std::shared_ptr<runtime::MissionRuntime> runtime_;  // On the robot it holds the devices.
+  std::shared_ptr<runtime::PadState> pad_state_;     // On the robot.
   MissionPhase phase_ = MissionPhase::kIdle;
   runtime::MissionSnapshot snapshot_;
   std::optional<runtime::MissionReport> report_;
