@@ -29,6 +29,7 @@ constexpr double kChunkS = 0.1;  // s of simulated time handed to the writer at 
 
 struct RecordOptions {
   std::string world;
+  std::string teleop;       // A scripted drive replacing the world's ("" = the world's).
   std::string rig;
   std::string robot;
   std::string out;
@@ -135,6 +136,15 @@ void RunRecord(const RecordOptions& options) {
       k.intrinsics = k.intrinsics.Scaled(options.width, height);
     }
   }
+  if (!options.teleop.empty()) {
+    auto teleop = sim::LoadTeleop(options.teleop);
+    if (!teleop) FailCommand(command, teleop.error().message);
+    world->teleop = *teleop;
+    // The drive, then 1 s standing, unless --duration says otherwise.
+    double drive_s = 1.0;
+    for (const auto& segment : world->teleop) drive_s += segment.duration_s;
+    world->duration_s = drive_s;
+  }
   // Labels follow what stands at the end of *this* run.
   if (options.duration_s > 0.0) world->duration_s = options.duration_s;
   const double duration = world->duration_s;
@@ -144,6 +154,7 @@ void RunRecord(const RecordOptions& options) {
   meta.seed = options.seed;
   meta.duration_s = duration;
   meta.extra["world_name"] = world->name;
+  if (!options.teleop.empty()) meta.extra["teleop"] = std::filesystem::absolute(options.teleop).string();
   meta.extra["robot"] = robot->name;
   meta.extra["ground_truth_frame"] = "map (origin and heading = robot start pose)";
   auto writer = robotio::RecordingWriter::Create(options.out, *rig, meta);
@@ -224,6 +235,11 @@ void RegisterRecordCommand(CLI::App& app) {
       "Record the real robot (Segway RMP, Xsens gyro, Kinects) driven with the gamepad: hold LB "
       "to drive, Start or Ctrl-C ends (docs/HARDWARE.md)");
   world->excludes(device);
+  record->add_option("--teleop", options->teleop,
+                     "Scripted drive (YAML with a teleop: list, e.g. resources/tours/"
+                     "office_tour.yaml) instead of the world's; the duration follows it")
+      ->check(CLI::ExistingFile)
+      ->needs(world);
   record->add_option("--rig", options->rig, "Rig file (default resources/rigs/two_kinects.yaml)");
   record->add_option("--robot", options->robot,
                      "Robot file (default resources/robots/segway_rmp50.yaml)")

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "SimTestWorlds.hpp"
 #include "dynamap/robotio/Rig.hpp"
@@ -23,6 +25,28 @@ TEST(WorldLoader, EveryBundledWorldAndScenarioLoads) {
     ++count;
   }
   EXPECT_GE(count, 6);  // office, small_office and the four scenarios.
+}
+
+TEST(WorldLoader, TheOfficeTourDrivesAtLeast100Metres) {
+  auto tour = LoadTeleop(std::string(DYNAMAP_RESOURCES_DIR) + "/tours/office_tour.yaml");
+  ASSERT_TRUE(tour.ok()) << tour.error().message;
+  double metres = 0.0;
+  for (const TeleopSegment& s : *tour) metres += std::abs(s.v) * s.duration_s;
+  EXPECT_GT(metres, 100.0);
+}
+
+TEST(WorldLoader, TeleopFileErrorsNameTheFileAndKey) {
+  const std::string file = ::testing::TempDir() + "/dynamap_bad_tour.yaml";
+  std::ofstream(file) << "teleop:\n  - {v: 0.5, omega: 0, duration: 3}\n";
+  auto tour = LoadTeleop(file);
+  ASSERT_FALSE(tour.ok());
+  EXPECT_NE(tour.error().message.find(file), std::string::npos) << tour.error().message;
+  EXPECT_NE(tour.error().message.find("duration"), std::string::npos) << tour.error().message;
+  std::ofstream(file) << "name: empty\nteleop: []\n";
+  tour = LoadTeleop(file);
+  ASSERT_FALSE(tour.ok());
+  EXPECT_NE(tour.error().message.find("at least one segment"), std::string::npos)
+      << tour.error().message;
 }
 
 TEST(WorldLoader, BundledRobotAndRigLoad) {

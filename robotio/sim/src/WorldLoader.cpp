@@ -22,6 +22,19 @@ Pose2D ReadPose(ConfigNode& node, const std::string& key) {
   return {v[0], v[1], WrapAngle(v[2] * kDeg)};
 }
 
+// The "teleop:" list of `node`: (v, omega) held for duration_s each.
+std::vector<TeleopSegment> ParseTeleopList(ConfigNode& node) {
+  std::vector<TeleopSegment> segments;
+  for (ConfigNode& n : node.ChildList("teleop")) {
+    TeleopSegment s;
+    s.v = n.RequireDouble("v", -2.0, 2.0);
+    s.omega = n.RequireDouble("omega", -5.0, 5.0);
+    s.duration_s = n.RequireDouble("duration_s", 0.0, 1e5);
+    segments.push_back(s);
+  }
+  return segments;
+}
+
 class Parser {
  public:
   explicit Parser(ConfigNode& root) : root_(root) {}
@@ -62,15 +75,7 @@ class Parser {
     if (root_.Has("people")) {
       for (ConfigNode& n : root_.ChildList("people")) ParsePerson(n);
     }
-    if (root_.Has("teleop")) {
-      for (ConfigNode& n : root_.ChildList("teleop")) {
-        TeleopSegment s;
-        s.v = n.RequireDouble("v", -2.0, 2.0);
-        s.omega = n.RequireDouble("omega", -5.0, 5.0);
-        s.duration_s = n.RequireDouble("duration_s", 0.0, 1e5);
-        world_.teleop.push_back(s);
-      }
-    }
+    if (root_.Has("teleop")) world_.teleop = ParseTeleopList(root_);
     if (world_.objects.size() > 0x7fff) root_.Fail("walls", "too many objects (at most 32767)");
     return world_;
   }
@@ -221,6 +226,17 @@ World ParseRoot(ConfigNode& root) { return Parser(root).Parse(); }
 
 Expected<World> LoadWorld(const std::string& file) {
   return ParseYamlFile<World>(file, ParseRoot);
+}
+
+Expected<std::vector<TeleopSegment>> LoadTeleop(const std::string& file) {
+  return ParseYamlFile<std::vector<TeleopSegment>>(file, [](ConfigNode& root) {
+    std::string name, description;
+    root.Read("name", &name);
+    root.Read("description", &description);
+    std::vector<TeleopSegment> segments = ParseTeleopList(root);
+    if (segments.empty()) root.Fail("teleop", "must list at least one segment");
+    return segments;
+  });
 }
 
 Expected<World> ParseWorld(const std::string& yaml_text, const std::string& name) {
