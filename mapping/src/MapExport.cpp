@@ -4,6 +4,7 @@
 #include <limits>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <vector>
 
 #include "dynamap/robotio/AtomicFile.hpp"
@@ -107,6 +108,10 @@ robotio::Status WriteTopDownPng(const DualOcTree& tree, const std::string& file)
       image.at<cv::Vec3b>(row, col) = bgr;
     }
   }
+  // Small maps are enlarged (whole pixels per voxel, no smoothing) so the longer side has
+  // about 600 pixels: a 5 × 6 m room is 100 × 120 voxels.
+  const int scale = std::clamp(600 / std::max(width, height), 1, 8);
+  if (scale > 1) cv::resize(image, image, cv::Size(), scale, scale, cv::INTER_NEAREST);
   return robotio::WriteFileAtomically(file, [&](const std::string& temporary) {
     return cv::imwrite(temporary, image, {cv::IMWRITE_PNG_COMPRESSION, 6});
   });

@@ -163,6 +163,8 @@ TEST(MapFilesTest, TopDownPngShowsStaticGreyAndDynamicRed) {
       if (p[0] == p[1] && p[1] == p[2] && p[0] < 200) ++grey;
     }
   }
+  // A room-sized map is enlarged to be seen (whole pixels per voxel).
+  EXPECT_GE(std::max(image.cols, image.rows), 300);
   EXPECT_GE(red, 8);    // The person's seen front face: 0.4 m wide at 5 cm.
   EXPECT_GT(grey, 50);  // The wall and the floor.
 }

@@ -16,9 +16,10 @@ namespace dynamap::mapping {
 [[nodiscard]] robotio::PointList OccupiedVoxelCentres(const DualOcTree& tree,
                                                       MapChannel channel);
 
-// Top-down PNG, one pixel per leaf column, x to the right and y up: red where any voxel of
-// the column is dynamic-occupied, grey (darker = taller) where it is static-occupied,
-// white where only free space was seen, light blue-grey where nothing was observed.
+// Top-down PNG, one square per leaf column (maps under 300 voxels across are drawn at 2–8
+// pixels per voxel), x to the right and y up: red where any voxel of the column is
+// dynamic-occupied, grey (darker = taller) where it is static-occupied, white where only
+// free space was seen, light blue-grey where nothing was observed.
 [[nodiscard]] robotio::Status WriteTopDownPng(const DualOcTree& tree, const std::string& file);
 
 }  // namespace dynamap::mapping
