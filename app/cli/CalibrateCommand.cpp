@@ -203,7 +203,7 @@ void ReplayRecording(cal::CalibrationSession* session, const std::string& dir) {
   cal::CaptureReplay replay(*reader);
   ProgressLine progress("replaying");
   constexpr std::int64_t kChunkNs = 100'000'000;  // 0.1 s of recorded time per update.
-  for (std::int64_t t = replay.begin_ns(); !replay.done(); t += kChunkNs) {
+  for (std::int64_t t = reader->first_stamp_ns(); !replay.done(); t += kChunkNs) {
     if (auto fed = replay.FeedUntil(*session, t, nullptr); !fed) {
       FailCommand(kCommand, fed.error().message);
     }

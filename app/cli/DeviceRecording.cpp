@@ -96,19 +96,14 @@ hw::RecordingDevices OpenRobotDevices(const char* command, const DeviceOptions& 
   if (!devices) FailCommand(command, devices.error().message);
   if (options.no_cameras) return std::move(devices).value();
 
-  auto cameras = hw::CameraConfigsForRig(rig, options.cameras);
-  if (!cameras) {
-    FailCommand(command, Sentence(cameras.error().message) +
-                              " Give one --camera per Kinect, in rig order, or --no-cameras to "
-                              "record without depth.");
+  if (auto opened = hw::OpenRigCameras(rig, options.cameras, &*devices); !opened) {
+    // Only recording may do without depth; a mission needs the Kinects.
+    const std::string hint = std::string(command) == "record"
+                                 ? " Give one --camera per Kinect, in rig order, or --no-cameras "
+                                   "to record without depth."
+                                 : " Give one --camera per Kinect, in rig order.";
+    FailCommand(command, Sentence(opened.error().message) + hint);
   }
-  auto opened = hw::OpenRecordingCameras(*cameras);
-  if (!opened) {
-    FailCommand(command, Sentence(opened.error().message) +
-                              " To record without depth on purpose, pass --no-cameras.");
-  }
-  devices->cameras = std::move(opened).value();
-  for (const auto& c : *cameras) devices->camera_names.push_back(c.name);
   return std::move(devices).value();
 }
 

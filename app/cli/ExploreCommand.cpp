@@ -25,7 +25,7 @@ namespace {
 
 struct ExploreOptions {
   std::string world = ResourcePath("worlds/office.yaml");
-  std::string rig = ResourcePath("rigs/two_kinects.yaml");
+  std::string rig;  // "" = resources/rigs/two_kinects.yaml; with --replay the recorded rig.
   std::string robot = ResourcePath("robots/segway_rmp50.yaml");
   std::string planning;  // Planning settings over the defaults; "" = defaults.
   std::string slam;      // SLAM settings over the defaults (--poses slam); "" = defaults.
@@ -40,7 +40,6 @@ struct ExploreOptions {
   bool headless = false;
   bool device = false;          // The real robot instead of the simulator.
   std::string replay;           // A recording replayed through the mission instead.
-  bool rig_given = false;       // --rig was on the command line.
   double area_m = runtime::MissionConfig{}.area_m;
   DeviceOptions device_options;
 };
@@ -61,6 +60,7 @@ runtime::MissionConfig ConfigFor(const ExploreOptions& options) {
   runtime::MissionConfig config;
   config.world_file = options.world;
   config.rig_file = options.rig;
+  config.recording_dir = options.replay;
   config.robot_file = options.robot;
   config.out_dir = options.out.empty() ? TimestampedRunDir() : options.out;
   config.seed = options.seed;
@@ -93,12 +93,7 @@ void Run(const ExploreOptions& options) {
   std::optional<robotio::hardware::RecordingDevices> devices;
   auto pad_state = std::make_shared<runtime::PadState>();
   robotio::Expected<std::unique_ptr<runtime::MissionRuntime>> runtime = [&] {
-    if (!options.replay.empty()) {
-      runtime::MissionConfig replay = config;
-      replay.recording_dir = options.replay;
-      replay.rig_file = options.rig_given ? options.rig : std::string();
-      return runtime::MissionRuntime::Create(replay);
-    }
+    // The simulator, or the recording named by config.recording_dir.
     if (!options.device) return runtime::MissionRuntime::Create(config);
     if (options.device_options.no_cameras) {
       FailCommand("explore", "--no-cameras: a mission maps and plans with the Kinects");
@@ -211,10 +206,9 @@ void RegisterExploreCommand(CLI::App& app) {
                      ->excludes(world)
                      ->excludes(device);
   cmd->add_option("--rig", options->rig,
-                  "Kinect rig file (with --replay: its poses and latencies replace the recorded "
-                  "ones)")
-      ->check(CLI::ExistingFile)
-      ->each([options](const std::string&) { options->rig_given = true; });
+                  "Kinect rig file (default resources/rigs/two_kinects.yaml; with --replay its "
+                  "poses and latencies replace the recorded ones)")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--robot", options->robot, "Robot file")->check(CLI::ExistingFile);
   cmd->add_option("--planning", options->planning,
                   "Planning settings (YAML, the keys of planning::PlanningConfig) over the "

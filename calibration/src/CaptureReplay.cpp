@@ -6,21 +6,7 @@
 
 namespace dynamap::calibration {
 
-CaptureReplay::CaptureReplay(const robotio::RecordingReader& reader) : reader_(reader) {
-  std::int64_t first = std::numeric_limits<std::int64_t>::max();
-  std::int64_t last = std::numeric_limits<std::int64_t>::min();
-  const auto take = [&](std::int64_t stamp) {
-    first = std::min(first, stamp);
-    last = std::max(last, stamp);
-  };
-  for (const auto& r : reader_.odometry()) take(r.stamp_ns);
-  for (const auto& r : reader_.imu()) take(r.stamp_ns);
-  for (const auto& entry : reader_.depth_entries()) take(entry.received_ns);
-  if (first <= last) {
-    begin_ns_ = first;
-    end_ns_ = last;
-  }
-}
+CaptureReplay::CaptureReplay(const robotio::RecordingReader& reader) : reader_(reader) {}
 
 bool CaptureReplay::done() const {
   return next_odometry_ >= reader_.odometry().size() && next_imu_ >= reader_.imu().size() &&

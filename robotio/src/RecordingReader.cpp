@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -216,6 +217,22 @@ Expected<RecordingReader> RecordingReader::Open(const std::string& dir) {
   }
   for (const std::string& warning : reader.warnings_) spdlog::warn("{}", warning);
   return reader;
+}
+
+std::int64_t RecordingReader::first_stamp_ns() const {
+  std::int64_t first = std::numeric_limits<std::int64_t>::max();
+  if (!odometry_.empty()) first = std::min(first, odometry_.front().stamp_ns);
+  if (!imu_.empty()) first = std::min(first, imu_.front().stamp_ns);
+  if (!depth_.empty()) first = std::min(first, depth_.front().received_ns);
+  return first == std::numeric_limits<std::int64_t>::max() ? 0 : first;
+}
+
+std::int64_t RecordingReader::last_stamp_ns() const {
+  std::int64_t last = 0;
+  if (!odometry_.empty()) last = std::max(last, odometry_.back().stamp_ns);
+  if (!imu_.empty()) last = std::max(last, imu_.back().stamp_ns);
+  if (!depth_.empty()) last = std::max(last, depth_.back().received_ns);
+  return last;
 }
 
 Status RecordingReader::UseExtrinsics(const Rig& rig, const std::string& source) {

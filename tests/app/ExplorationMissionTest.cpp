@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "../robotio/TestPaths.hpp"
+#include "SmallOfficeMission.hpp"
 #include "dynamap/app/runtime/MissionRuntime.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
 
@@ -17,15 +18,6 @@ namespace dynamap::app::runtime {
 namespace {
 
 namespace fs = std::filesystem;
-
-MissionConfig SmallOffice(const std::string& out) {
-  MissionConfig config;
-  config.world_file = test::Resource("worlds/small_office.yaml");
-  config.out_dir = out;
-  config.kinect_width = 160;
-  config.kinect_height = 120;
-  return config;
-}
 
 // Creates, runs until the mission ends by itself, and scores.
 robotio::Expected<MissionReport> RunToTheEnd(const MissionConfig& config) {
@@ -40,7 +32,7 @@ TEST(ExplorationMission, AWorldFileWithAnErrorStopsBeforeTheMissionStarts) {
   const std::string out = test::ScratchDir();
   const std::string world = out + "/broken.yaml";
   std::ofstream(world) << "name: broken\nfloor: {min: [0, 0], max: [nope, 6]}\n";
-  MissionConfig config = SmallOffice(out + "/run");
+  MissionConfig config = SmallOfficeMission(out + "/run");
   config.world_file = world;
   const auto runtime = MissionRuntime::Create(config);
   ASSERT_FALSE(runtime);
@@ -51,7 +43,7 @@ TEST(ExplorationMission, AWorldFileWithAnErrorStopsBeforeTheMissionStarts) {
 
 TEST(ExplorationMission, AMissingRigFileIsNamed) {
   const std::string out = test::ScratchDir();
-  MissionConfig config = SmallOffice(out);
+  MissionConfig config = SmallOfficeMission(out);
   config.rig_file = out + "/no_such_rig.yaml";
   const auto runtime = MissionRuntime::Create(config);
   ASSERT_FALSE(runtime);
@@ -61,7 +53,7 @@ TEST(ExplorationMission, AMissingRigFileIsNamed) {
 
 TEST(ExplorationMission, MapsAreSavedPeriodicallyWhileTheMissionRuns) {
   const std::string out = test::ScratchDir();
-  MissionConfig config = SmallOffice(out);
+  MissionConfig config = SmallOfficeMission(out);
   config.poses = PoseSource::kGroundTruth;
   config.save_period_s = 5.0;
   config.max_time_s = 60.0;
@@ -101,7 +93,7 @@ TEST(ExplorationMission, MapsAreSavedPeriodicallyWhileTheMissionRuns) {
 // odometry alone 0.040 to 0.053 m): only a loose bound is asserted.
 TEST(ExplorationMission, SlamRegistersBothKinectsOfAnInstantAsOneScan) {
   const std::string out = test::ScratchDir();
-  MissionConfig config = SmallOffice(out);
+  MissionConfig config = SmallOfficeMission(out);
   config.poses = PoseSource::kSlam;
   config.max_time_s = 30.0;
   const auto report = RunToTheEnd(config);
@@ -126,7 +118,7 @@ TEST(ExplorationMission, SlamRegistersBothKinectsOfAnInstantAsOneScan) {
 // still inspecting walls when the time is up.
 TEST(ExplorationMission, ExploresTheSmallOffice) {
   const std::string out = test::ScratchDir();
-  MissionConfig config = SmallOffice(out);
+  MissionConfig config = SmallOfficeMission(out);
   config.poses = PoseSource::kGroundTruth;
   config.max_time_s = 200.0;
   const auto report = RunToTheEnd(config);

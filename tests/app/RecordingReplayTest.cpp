@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "../robotio/TestPaths.hpp"
+#include "SmallOfficeMission.hpp"
 #include "dynamap/app/runtime/MissionRuntime.hpp"
 #include "dynamap/robotio/RecordingReader.hpp"
 
@@ -15,15 +16,6 @@ namespace dynamap::app::runtime {
 namespace {
 
 namespace fs = std::filesystem;
-
-MissionConfig SmallOffice(const std::string& out) {
-  MissionConfig config;
-  config.world_file = test::Resource("worlds/small_office.yaml");
-  config.out_dir = out;
-  config.kinect_width = 160;
-  config.kinect_height = 120;
-  return config;
-}
 
 robotio::Expected<MissionReport> RunMission(robotio::Expected<std::unique_ptr<MissionRuntime>> runtime) {
   if (!runtime) return runtime.error();
@@ -35,7 +27,7 @@ robotio::Expected<MissionReport> RunMission(robotio::Expected<std::unique_ptr<Mi
 // Records a short mission into `scratch`/recorded and returns the recording's folder.
 std::string RecordMission(const std::string& scratch) {
   const std::string out = scratch + "/recorded";
-  MissionConfig config = SmallOffice(out);
+  MissionConfig config = SmallOfficeMission(out);
   config.poses = PoseSource::kGroundTruth;
   config.max_time_s = 8.0;
   config.record = true;

@@ -3,7 +3,6 @@
 // OpenNI2 .oni file.
 #include <gtest/gtest.h>
 
-#include <OpenNI.h>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +11,7 @@
 
 #include "../robotio/TestPaths.hpp"
 #include "../support/CommandRunner.hpp"
+#include "../support/DummyOni.hpp"
 #include "../support/ReprojectedView.hpp"
 #include "dynamap/robotio/DepthImageIo.hpp"
 #include "dynamap/robotio/Rig.hpp"
@@ -124,30 +124,9 @@ TEST(SequenceMapping, OdometryPosesOfASequenceWithoutOdometryAreAClearError) {
 TEST(SequenceMapping, OniFileThatPlaysNothingIsAClearError) {
   const std::string dir = test::ScratchDir();
   const std::string oni = dir + "/dummy.oni";
-  {
-    ASSERT_EQ(openni::OpenNI::initialize(), openni::STATUS_OK);
-    openni::Device device;
-    ASSERT_EQ(device.open("Dummy"), openni::STATUS_OK);
-    openni::VideoStream depth;
-    ASSERT_EQ(depth.create(device, openni::SENSOR_DEPTH), openni::STATUS_OK);
-    ASSERT_EQ(depth.start(), openni::STATUS_OK);
-    openni::Recorder recorder;
-    ASSERT_EQ(recorder.create(oni.c_str()), openni::STATUS_OK);
-    ASSERT_EQ(recorder.attach(depth, false), openni::STATUS_OK);
-    ASSERT_EQ(recorder.start(), openni::STATUS_OK);
-    for (int i = 0; i < 4; ++i) {
-      openni::VideoStream* stream = &depth;
-      int ready = -1;
-      ASSERT_EQ(openni::OpenNI::waitForAnyStream(&stream, 1, &ready, 1000), openni::STATUS_OK);
-      openni::VideoFrameRef frame;
-      ASSERT_EQ(depth.readFrame(&frame), openni::STATUS_OK);
-    }
-    recorder.stop();
-    recorder.destroy();
-    depth.stop();
-    depth.destroy();
-    device.close();
-  }
+  int recorded = 0;
+  ASSERT_NO_FATAL_FAILURE(test::RecordDummyOni(oni, 4, &recorded));
+  ASSERT_EQ(recorded, 4);
   const CommandResult run = RunDynamap("map --log " + oni + " --out " + dir + "/out", dir + "/map.log");
   if (run.exit_code == 0) {
     // An OpenNI2 that does play files back: then the frames must have been mapped.

@@ -2,7 +2,6 @@
 // the floor step is complete, standing still completes it, Next and Skip move through the
 // steps, solving shows the rig table, a recording of the guided sequence is replayed and
 // solved, and a room file that cannot be opened is an error naming it.
-#include <QProcess>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -70,14 +69,7 @@ class CalibrationWorkspaceTest : public QObject {
   void RecordingIsReplayedThenSolved() {
     QTemporaryDir dir;
     const QString recording = dir.filePath(QStringLiteral("recording"));
-    QProcess record;
-    record.start(QString::fromUtf8(DYNAMAP_EXECUTABLE),
-                 {QStringLiteral("record"), QStringLiteral("--world"),
-                  ResourcePath(QStringLiteral("worlds/calibration_room.yaml")),
-                  QStringLiteral("--duration"), QStringLiteral("40"), QStringLiteral("--width"),
-                  QStringLiteral("160"), QStringLiteral("--out"), recording});
-    QVERIFY(record.waitForFinished(120000));
-    QCOMPARE(record.exitCode(), 0);
+    QVERIFY(RecordCalibrationRoom(recording, 40));
 
     CalibrationWorkspace workspace;
     workspace.SetRecording(recording);

@@ -1,10 +1,12 @@
 #include "GuiTestSupport.hpp"
 
 #include <QDir>
+#include <QProcess>
 #include <octomap/octomap_utils.h>
 
 #include <cmath>
 
+#include "dynamap/app/gui/ResourceFiles.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
 
 namespace dynamap::app::gui::test {
@@ -81,6 +83,22 @@ QString OutputDir(const QString& name) {
   const QString dir = QDir(QStringLiteral(DYNAMAP_BINARY_DIR)).filePath(name);
   QDir().mkpath(dir);
   return dir;
+}
+
+bool RecordCalibrationRoom(const QString& dir, int seconds) {
+  QProcess record;
+  record.setProcessChannelMode(QProcess::MergedChannels);
+  record.start(QString::fromUtf8(DYNAMAP_EXECUTABLE),
+               {QStringLiteral("record"), QStringLiteral("--world"),
+                ResourcePath(QStringLiteral("worlds/calibration_room.yaml")),
+                QStringLiteral("--duration"), QString::number(seconds), QStringLiteral("--width"),
+                QStringLiteral("160"), QStringLiteral("--out"), dir});
+  const bool finished = record.waitForFinished(180000);
+  if (!finished || record.exitCode() != 0) {
+    qWarning("dynamap record failed: %s", record.readAll().constData());
+    return false;
+  }
+  return true;
 }
 
 }  // namespace dynamap::app::gui::test

@@ -33,4 +33,8 @@ QString Geb079Path();
 // A directory in the build tree for test output (created).
 QString OutputDir(const QString& name);
 
+// `dynamap record` of the calibration room's scripted guided sequence, its first
+// `seconds`, at 160 px, into the new folder `dir`; false (with a test warning) on failure.
+bool RecordCalibrationRoom(const QString& dir, int seconds);
+
 }  // namespace dynamap::app::gui::test

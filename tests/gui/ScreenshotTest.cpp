@@ -5,7 +5,6 @@
 // pictures hold what they should (voxels, red dynamic ones).
 #include <QDir>
 #include <QImage>
-#include <QProcess>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -129,14 +128,7 @@ class ScreenshotTest : public QObject {
     window_->ShowWorkspace(0);
     QTemporaryDir out;
     const QString recording = out.filePath(QStringLiteral("recording"));
-    QProcess record;
-    record.start(QString::fromUtf8(DYNAMAP_EXECUTABLE),
-                 {QStringLiteral("record"), QStringLiteral("--world"),
-                  ResourcePath(QStringLiteral("worlds/calibration_room.yaml")),
-                  QStringLiteral("--duration"), QStringLiteral("89"), QStringLiteral("--width"),
-                  QStringLiteral("160"), QStringLiteral("--out"), recording});
-    QVERIFY(record.waitForFinished(180000));
-    QCOMPARE(record.exitCode(), 0);
+    QVERIFY(RecordCalibrationRoom(recording, 89));
     CalibrationWorkspace* calibration = window_->Calibration();
     calibration->SetRecording(recording);
     calibration->SetSpeed(0.0);

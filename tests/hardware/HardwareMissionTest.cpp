@@ -3,21 +3,17 @@
 // js_event records through a FIFO and a scripted Kinect. What must hold: the planner's
 // commands reach the base only while the button is held, a lost device stops the base and
 // ends the mission, and the maps and report are saved either way.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <linux/joystick.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "PtyPair.hpp"
-#include "RmpEmulator.hpp"
-#include "XsensEmulator.hpp"
+#include "EmulatedRobot.hpp"
 #include "dynamap/app/runtime/MissionRuntime.hpp"
+#include "dynamap/app/runtime/RobotSources.hpp"
 #include "dynamap/robotio/hardware/MonotonicClock.hpp"
 #include "dynamap/robotio/hardware/RecordingDevices.hpp"
 
@@ -25,10 +21,7 @@ namespace dynamap::robotio::hardware {
 namespace {
 
 namespace fs = std::filesystem;
-using test::PtyPair;
-using test::RmpEmulator;
 using test::WaitUntil;
-using test::XsensEmulator;
 
 // A wall 1.5 m ahead at 80 × 60 px, about 30 Hz.
 class WallCamera final : public DepthCameraInterface {
@@ -47,40 +40,18 @@ class WallCamera final : public DepthCameraInterface {
   }
 };
 
-class HardwareMissionTest : public ::testing::Test {
+class HardwareMissionTest : public test::EmulatedRobotTest {
  protected:
   void SetUp() override {
-    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    dir_ = fs::temp_directory_path() / ("dynamap_mission_" + std::to_string(::getpid()) + "_" + name);
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    pad_path_ = (dir_ / "js0").string();
-    ASSERT_EQ(::mkfifo(pad_path_.c_str(), 0600), 0);
-    DriveDevicesConfig devices;
-    devices.rmp.device = rmp_pty_.slave_path();
-    devices.imu.emplace();
-    devices.imu->device = imu_pty_.slave_path();
-    devices.pad.device = pad_path_;
-    auto opened = OpenDriveDevices(devices);
-    ASSERT_TRUE(opened.ok()) << opened.error().message;
-    devices_ = std::move(opened).value();
-    pad_fd_ = ::open(pad_path_.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
-    ASSERT_GE(pad_fd_, 0);
+    ASSERT_NO_FATAL_FAILURE(EmulatedRobotTest::SetUp());
+    ASSERT_NO_FATAL_FAILURE(OpenDevices());
     std::ofstream(dir_ / "rig.yaml")
         << "kinects:\n  - {id: front, translation: [0.1, 0, 0.6], rpy_deg: [0, 10, 0], "
            "latency_s: 0.03}\n";
   }
   void TearDown() override {
-    runtime_.reset();
-    if (pad_fd_ >= 0) ::close(pad_fd_);
-    fs::remove_all(dir_);
-  }
-  void Pad(std::uint8_t type, std::uint8_t number, std::int16_t value) {
-    js_event event{};
-    event.type = type;
-    event.number = number;
-    event.value = value;
-    ASSERT_EQ(::write(pad_fd_, &event, sizeof event), static_cast<ssize_t>(sizeof event));
+    runtime_.reset();  // Before the devices it reads.
+    EmulatedRobotTest::TearDown();
   }
   void StartMission() {
     app::runtime::MissionConfig config;
@@ -90,16 +61,10 @@ class HardwareMissionTest : public ::testing::Test {
     config.kinect_height = 60;
     config.max_time_s = 60.0;
     config.area_m = 10.0;
-    app::runtime::DeviceSources sources;
-    sources.base = devices_.base.get();
-    sources.imu = devices_.imu.get();
+    // As explore --device wires them, with a scripted Kinect.
+    app::runtime::DeviceSources sources =
+        app::runtime::SourcesFromRobot(devices_, std::make_shared<app::runtime::PadState>());
     sources.cameras.push_back({&camera_, "Kinect front (scripted)"});
-    GamepadTeleop* pad = &*devices_.pad;
-    sources.deadman = [pad](std::chrono::milliseconds wait) -> Expected<bool> {
-      auto state = pad->Update(wait);
-      if (!state) return state.error();
-      return state->deadman_held;
-    };
     auto runtime = app::runtime::MissionRuntime::CreateOnDevices(config, std::move(sources));
     ASSERT_TRUE(runtime.ok()) << runtime.error().message;
     runtime_ = std::move(runtime).value();
@@ -116,14 +81,6 @@ class HardwareMissionTest : public ::testing::Test {
     return nlohmann::json::parse(in);
   }
 
-  fs::path dir_;
-  std::string pad_path_;
-  int pad_fd_ = -1;
-  PtyPair rmp_pty_;
-  PtyPair imu_pty_;
-  RmpEmulator rmp_{rmp_pty_};
-  XsensEmulator imu_{imu_pty_};
-  RecordingDevices devices_;
   WallCamera camera_;
   std::unique_ptr<app::runtime::MissionRuntime> runtime_;
 };
@@ -203,7 +160,6 @@ TEST(HardwareMission, GroundTruthPosesAreRefusedOnTheRobot) {
   app::runtime::MissionConfig config;
   config.poses = app::runtime::PoseSource::kGroundTruth;
   app::runtime::DeviceSources sources;
-  WallCamera camera;
   struct NoBase : DriveBaseInterface {
     Status Command(const VelocityCommand&) override { return Ok{}; }
     Expected<std::vector<OdometryReading>> ReadOdometry() override {

@@ -2,9 +2,9 @@
 // device ("Dummy") for the live stream path, and a .oni file recorded from it.
 #include <gtest/gtest.h>
 
-#include <OpenNI.h>
 #include <filesystem>
 
+#include "../support/DummyOni.hpp"
 #include "dynamap/robotio/RecordingReader.hpp"
 #include "dynamap/robotio/hardware/OniUnpacking.hpp"
 #include "dynamap/robotio/hardware/OpenNiCamera.hpp"
@@ -91,31 +91,7 @@ TEST(OpenNiCamera, RecordingFromOpenNiRecorderOpensAsAFileDevice) {
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / ("dynamap_hw_" + std::to_string(::getpid()) + ".oni");
   int recorded = 0;
-  {
-    ASSERT_EQ(openni::OpenNI::initialize(), openni::STATUS_OK);
-    openni::Device device;
-    ASSERT_EQ(device.open("Dummy"), openni::STATUS_OK);
-    openni::VideoStream depth;
-    ASSERT_EQ(depth.create(device, openni::SENSOR_DEPTH), openni::STATUS_OK);
-    ASSERT_EQ(depth.start(), openni::STATUS_OK);
-    openni::Recorder recorder;
-    ASSERT_EQ(recorder.create(file.c_str()), openni::STATUS_OK);
-    ASSERT_EQ(recorder.attach(depth, false), openni::STATUS_OK);
-    ASSERT_EQ(recorder.start(), openni::STATUS_OK);
-    for (int i = 0; i < 5; ++i) {
-      openni::VideoStream* stream = &depth;
-      int ready = -1;
-      if (openni::OpenNI::waitForAnyStream(&stream, 1, &ready, 1000) != openni::STATUS_OK) break;
-      openni::VideoFrameRef frame;
-      depth.readFrame(&frame);
-      ++recorded;
-    }
-    recorder.stop();
-    recorder.destroy();
-    depth.stop();
-    depth.destroy();
-    device.close();
-  }
+  ASSERT_NO_FATAL_FAILURE(dynamap::test::RecordDummyOni(file.string(), 5, &recorded));
   ASSERT_GT(recorded, 0);
   OpenNiCameraConfig config;
   config.device = file.string();

@@ -12,6 +12,7 @@
 #include <future>
 #include <thread>
 
+#include "EmulatedRobot.hpp"
 #include "PtyPair.hpp"
 #include "RmpEmulator.hpp"
 #include "XsensEmulator.hpp"
@@ -152,41 +153,12 @@ TEST(RecordingDevices, CameraIndexBeyondTheListedDevicesIsAnError) {
   EXPECT_EQ(configs.error().message.rfind("camera 7: ", 0), 0U) << configs.error().message;
 }
 
-class RecordingLoopTest : public ::testing::Test {
+class RecordingLoopTest : public test::EmulatedRobotTest {
  protected:
   void SetUp() override {
-    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    dir_ = fs::temp_directory_path() / ("dynamap_rec_" + std::to_string(::getpid()) + "_" + name);
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    pad_path_ = (dir_ / "js0").string();
-    ASSERT_EQ(::mkfifo(pad_path_.c_str(), 0600), 0);
-    config_.rmp.device = rmp_pty_.slave_path();
-    config_.imu.emplace();
-    config_.imu->device = imu_pty_.slave_path();
-    config_.pad.device = pad_path_;
+    ASSERT_NO_FATAL_FAILURE(EmulatedRobotTest::SetUp());
     rmp_.SetWheelCounts(5000, -7000);  // The base's counters do not start at zero.
     imu_.SetRate(0.0F, 0.0F, 0.25F);
-  }
-  void TearDown() override {
-    if (pad_fd_ >= 0) ::close(pad_fd_);
-    fs::remove_all(dir_);
-  }
-
-  // Opens the devices as `dynamap record --device` does, then the pad's writing end.
-  void OpenDevices() {
-    Expected<RecordingDevices> devices = OpenDriveDevices(config_);
-    ASSERT_TRUE(devices.ok()) << devices.error().message;
-    devices_ = std::move(devices).value();
-    pad_fd_ = ::open(pad_path_.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
-    ASSERT_GE(pad_fd_, 0);
-  }
-  void Pad(std::uint8_t type, std::uint8_t number, std::int16_t value) {
-    js_event event{};
-    event.type = type;
-    event.number = number;
-    event.value = value;
-    ASSERT_EQ(::write(pad_fd_, &event, sizeof event), static_cast<ssize_t>(sizeof event));
   }
   std::unique_ptr<RecordingWriter> Writer(const Rig& rig) {
     RecordingMeta meta;
@@ -211,15 +183,6 @@ class RecordingLoopTest : public ::testing::Test {
     return std::move(reader).value();
   }
 
-  fs::path dir_;
-  std::string pad_path_;
-  int pad_fd_ = -1;
-  PtyPair rmp_pty_;
-  PtyPair imu_pty_;
-  RmpEmulator rmp_{rmp_pty_};
-  XsensEmulator imu_{imu_pty_};
-  DriveDevicesConfig config_;
-  RecordingDevices devices_;
   RecordingLoopConfig loop_;
   std::atomic<bool> interrupt_{false};
   std::atomic<bool> saw_deadman_{false};

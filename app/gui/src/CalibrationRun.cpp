@@ -126,28 +126,23 @@ robotio::Expected<std::unique_ptr<CalibrationRun>> CalibrationRun::Create(
 
   cal::SessionConfig config;
   config.track_width_m = robot->track_width_m;
-  if (reader) {
-    std::unique_ptr<CalibrationRun> run(new CalibrationRun(setup, *guess, robotio::Rig{}));
-    run->robot_radius_m_ = robot->footprint_radius_m;
-    run->impl_ = std::make_unique<Impl>(cal::CalibrationSession(*guess, config), config);
-    run->impl_->replay = std::make_unique<cal::CaptureReplay>(*reader);
-    run->impl_->replay_ns = run->impl_->replay->begin_ns();
-    run->impl_->reader = std::move(reader);
-    run->impl_->depth.resize(guess->kinects.size());
-    run->state_.progress = run->impl_->session.Progress();
-    run->state_.replay = true;
-    run->thread_ = std::thread([r = run.get()] { r->Loop(); });
-    return run;
-  }
-  robotio::Rig truth = SimulatedRigTruth(*guess, setup);
+  // A recording's true rig is unknown (empty); the simulator's is the guess perturbed.
+  const robotio::Rig truth = reader ? robotio::Rig{} : SimulatedRigTruth(*guess, setup);
   std::unique_ptr<CalibrationRun> run(new CalibrationRun(setup, *guess, truth));
   run->robot_radius_m_ = robot->footprint_radius_m;
-  run->true_scale_left_ = 1.0 / (1.0 + robot->encoder_scale_error_left);
-  run->true_scale_right_ = 1.0 / (1.0 + robot->encoder_scale_error_right);
-  robotio::sim::SimulatorConfig sim_config;
-  sim_config.seed = setup.seed;
   run->impl_ = std::make_unique<Impl>(cal::CalibrationSession(*guess, config), config);
-  run->impl_->simulator.emplace(*world, *robot, truth, sim_config);
+  if (reader) {
+    run->impl_->replay = std::make_unique<cal::CaptureReplay>(*reader);
+    run->impl_->replay_ns = reader->first_stamp_ns();
+    run->impl_->reader = std::move(reader);
+    run->state_.replay = true;
+  } else {
+    run->true_scale_left_ = 1.0 / (1.0 + robot->encoder_scale_error_left);
+    run->true_scale_right_ = 1.0 / (1.0 + robot->encoder_scale_error_right);
+    robotio::sim::SimulatorConfig sim_config;
+    sim_config.seed = setup.seed;
+    run->impl_->simulator.emplace(*world, *robot, truth, sim_config);
+  }
   run->impl_->depth.resize(guess->kinects.size());
   run->state_.progress = run->impl_->session.Progress();
   run->thread_ = std::thread([r = run.get()] { r->Loop(); });
@@ -338,7 +333,7 @@ void CalibrationRun::Loop() {
       published.progress = m.session.Progress();
       published.sim_time_s =
           m.simulator ? robotio::NanosToSeconds(m.simulator->now_ns())
-                      : robotio::NanosToSeconds(m.replay_ns - m.replay->begin_ns());
+                      : robotio::NanosToSeconds(m.replay_ns - m.reader->first_stamp_ns());
       published.auto_driving = !m.script.empty();
       published.driving = m.v != 0.0 || m.omega != 0.0;
       published.depth = m.depth;

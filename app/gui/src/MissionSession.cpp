@@ -70,12 +70,9 @@ robotio::Expected<std::shared_ptr<runtime::MissionRuntime>> CreateOnRobot(
   auto opened = hw::OpenDriveDevices(drive);
   if (!opened) return opened.error();
   auto devices = std::make_shared<hw::RecordingDevices>(std::move(opened).value());
-  auto cameras = hw::CameraConfigsForRig(*rig, setup.cameras);
-  if (!cameras) return cameras.error();
-  auto open_cameras = hw::OpenRecordingCameras(*cameras);
-  if (!open_cameras) return open_cameras.error();
-  devices->cameras = std::move(open_cameras).value();
-  for (const auto& c : *cameras) devices->camera_names.push_back(c.name);
+  if (auto cameras = hw::OpenRigCameras(*rig, setup.cameras, devices.get()); !cameras) {
+    return cameras.error();
+  }
   auto created = runtime::MissionRuntime::CreateOnDevices(
       config, runtime::SourcesFromRobot(*devices, pad_state));
   if (!created) return created.error();

@@ -1,7 +1,9 @@
 #include "dynamap/app/runtime/Mediator.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace dynamap::app::runtime {
 
@@ -101,6 +103,20 @@ robotio::Trajectory Mediator::GroundTruth() const {
 std::vector<robotio::Pose2D> Mediator::Trail() const {
   std::lock_guard<std::mutex> lock(trajectory_mutex_);
   return trail_;
+}
+
+bool Mediator::WaitForWorkers(std::int64_t t_ns, double control_period_s,
+                              double replan_period_s) {
+  const auto control_lag = static_cast<std::int64_t>(control_period_s * 1e9);
+  const auto plan_lag = static_cast<std::int64_t>(replan_period_s * 1e9);
+  while (!control.stopping()) {
+    const bool control_ok = counters.control_done_ns.load() >= t_ns - control_lag;
+    const bool slam_ok = counters.slam_done_ns.load() >= counters.last_frame_received_ns.load();
+    const bool plan_ok = counters.planning_done_ns.load() >= t_ns - plan_lag;
+    if (control_ok && slam_ok && plan_ok) return true;
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  return false;
 }
 
 void Mediator::WakeAll() {

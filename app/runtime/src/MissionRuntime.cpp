@@ -223,7 +223,7 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::CreateFromRec
   const robotio::Rig rig = reader->rig();
   // Ground truth (doors, people) is judged at the end of what is replayed.
   config.max_time_s =
-      std::min(config.max_time_s, robotio::NanosToSeconds(RecordedEndNanos(*reader)));
+      std::min(config.max_time_s, robotio::NanosToSeconds(reader->last_stamp_ns()));
   config.world_file = reader->meta().world;
   auto prepared = Prepare(std::move(config), std::move(world), rig);
   if (!prepared) return prepared.error();

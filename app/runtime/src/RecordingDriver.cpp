@@ -9,37 +9,13 @@
 
 namespace dynamap::app::runtime {
 
-std::int64_t RecordedEndNanos(const robotio::RecordingReader& reader) {
-  std::int64_t end_ns = 0;
-  if (!reader.odometry().empty()) end_ns = std::max(end_ns, reader.odometry().back().stamp_ns);
-  if (!reader.imu().empty()) end_ns = std::max(end_ns, reader.imu().back().stamp_ns);
-  for (const robotio::DepthEntry& entry : reader.depth_entries()) {
-    end_ns = std::max(end_ns, entry.received_ns);
-  }
-  return end_ns;
-}
-
 RecordingDriver::RecordingDriver(const robotio::RecordingReader& reader, Mediator& mediator,
                                  RecordingDriverConfig config)
     : reader_(reader), mediator_(mediator), config_(config) {
   for (const robotio::StampedPose& p : reader_.ground_truth()) {
     truth_.push_back({p.stamp_ns, robotio::Pose2D::FromIsometry(p.pose)});
   }
-  end_ns_ = RecordedEndNanos(reader_);
-}
-
-bool RecordingDriver::WaitForWorkers(std::int64_t t_ns) {
-  const auto control_lag = static_cast<std::int64_t>(config_.control_period_s * 1e9);
-  const auto plan_lag = static_cast<std::int64_t>(config_.replan_period_s * 1e9);
-  const MissionCounters& c = mediator_.counters;
-  while (!mediator_.control.stopping()) {
-    const bool control_ok = c.control_done_ns.load() >= t_ns - control_lag;
-    const bool slam_ok = c.slam_done_ns.load() >= c.last_frame_received_ns.load();
-    const bool plan_ok = c.planning_done_ns.load() >= t_ns - plan_lag;
-    if (control_ok && slam_ok && plan_ok) return true;
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
-  }
-  return false;
+  end_ns_ = reader_.last_stamp_ns();
 }
 
 bool RecordingDriver::PublishUpTo(std::int64_t t_ns) {
@@ -89,7 +65,7 @@ void RecordingDriver::Run() {
     if (!mediator_.control.WaitWhilePaused()) break;
     if (was_paused) mediator_.clock.Reanchor();
     if (mediator_.control.state() == MissionState::kRunning && !mediator_.clock.paced()) {
-      if (!WaitForWorkers(t_ns)) break;
+      if (!mediator_.WaitForWorkers(t_ns, config_.control_period_s, config_.replan_period_s)) break;
     }
     if (t_ns > end_ns) {
       reached_end_ = true;

@@ -16,20 +16,6 @@ SimulationDriver::SimulationDriver(std::unique_ptr<robotio::sim::Simulator> simu
       config_(config),
       recording_(recording) {}
 
-bool SimulationDriver::WaitForWorkers(std::int64_t t_ns) {
-  const auto control_lag = static_cast<std::int64_t>(config_.control_period_s * 1e9);
-  const auto plan_lag = static_cast<std::int64_t>(config_.replan_period_s * 1e9);
-  const MissionCounters& c = mediator_.counters;
-  while (!mediator_.control.stopping()) {
-    const bool control_ok = c.control_done_ns.load() >= t_ns - control_lag;
-    const bool slam_ok = c.slam_done_ns.load() >= c.last_frame_received_ns.load();
-    const bool plan_ok = c.planning_done_ns.load() >= t_ns - plan_lag;
-    if (control_ok && slam_ok && plan_ok) return true;
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
-  }
-  return false;
-}
-
 void SimulationDriver::Publish(robotio::sim::SimOutput& out) {
   mediator_.odometry.Add(out.odometry, out.imu);
   mediator_.AddGroundTruth(out.ground_truth);
@@ -69,7 +55,7 @@ void SimulationDriver::Run() {
     if (!mediator_.control.WaitWhilePaused()) break;
     if (was_paused) mediator_.clock.Reanchor();  // No racing to catch up after a pause.
     if (mediator_.control.state() == MissionState::kRunning && !mediator_.clock.paced()) {
-      if (!WaitForWorkers(t_ns)) break;
+      if (!mediator_.WaitForWorkers(t_ns, config_.control_period_s, config_.replan_period_s)) break;
     }
     if (t_ns >= end_ns) {
       reached_time_limit_ = true;

@@ -146,4 +146,16 @@ Expected<std::vector<std::unique_ptr<OpenNiCamera>>> OpenRecordingCameras(
   return cameras;
 }
 
+Status OpenRigCameras(const Rig& rig, const std::vector<std::string>& specs,
+                      RecordingDevices* devices) {
+  auto configs = CameraConfigsForRig(rig, specs);
+  if (!configs) return configs.error();
+  auto opened = OpenRecordingCameras(*configs);
+  if (!opened) return opened.error();
+  devices->cameras = std::move(opened).value();
+  devices->camera_names.clear();
+  for (const auto& c : *configs) devices->camera_names.push_back(c.name);
+  return Ok{};
+}
+
 }  // namespace dynamap::robotio::hardware

@@ -27,15 +27,11 @@ class CaptureReplay {
   [[nodiscard]] bool done() const;
   // Share of the depth frames fed so far, [0, 1].
   [[nodiscard]] double fraction() const;
-  // Stamps of the recording's first and last entries (ns).
-  [[nodiscard]] std::int64_t begin_ns() const { return begin_ns_; }
-  [[nodiscard]] std::int64_t end_ns() const { return end_ns_; }
+
 
  private:
   const robotio::RecordingReader& reader_;
   std::size_t next_odometry_ = 0, next_imu_ = 0, next_depth_ = 0;
-  std::int64_t begin_ns_ = 0;
-  std::int64_t end_ns_ = 0;
 };
 
 }  // namespace dynamap::calibration

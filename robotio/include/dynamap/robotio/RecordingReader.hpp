@@ -41,6 +41,10 @@ class RecordingReader {
   [[nodiscard]] const std::vector<ImuReading>& imu() const { return imu_; }
   [[nodiscard]] const Trajectory& ground_truth() const { return ground_truth_; }
   [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
+  // Stamps (ns) of the first and last odometry, gyro or depth entry (depth by receive
+  // stamp): the span a replay runs over. Both 0 when there is none.
+  [[nodiscard]] std::int64_t first_stamp_ns() const;
+  [[nodiscard]] std::int64_t last_stamp_ns() const;
 
   // Takes each Kinect's pose and latency from `rig` (e.g. a newer calibration) instead of
   // the recorded ones; intrinsics, rates and ranges stay the recording's. The rig must have

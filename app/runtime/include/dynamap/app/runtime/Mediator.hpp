@@ -112,6 +112,11 @@ class Mediator {
   // Wakes every waiting worker (stop).
   void WakeAll();
 
+  // Lockstep (speed 0): a sensor driver about to advance to mission time `t_ns` waits until
+  // control has run within `control_period_s` of it, planning within `replan_period_s`,
+  // and SLAM has taken every frame delivered; false when the mission stops first.
+  bool WaitForWorkers(std::int64_t t_ns, double control_period_s, double replan_period_s);
+
  private:
   mutable std::mutex obstacles_mutex_;
   std::vector<Eigen::Vector2d> obstacles_;

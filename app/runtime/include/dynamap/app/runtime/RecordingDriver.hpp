@@ -15,9 +15,6 @@
 
 namespace dynamap::app::runtime {
 
-// ns of recorded time from t = 0 to the last odometry, gyro or depth entry.
-[[nodiscard]] std::int64_t RecordedEndNanos(const robotio::RecordingReader& reader);
-
 struct RecordingDriverConfig {
   double step_s = 0.01;            // s of recorded time per step.
   double max_time_s = 1e9;         // s, the replay stops here if the recording is longer.
@@ -39,7 +36,6 @@ class RecordingDriver final : public SensorDriver {
   [[nodiscard]] std::optional<std::string> device_error() const override { return error_; }
 
  private:
-  bool WaitForWorkers(std::int64_t t_ns);
   // Publishes every entry stamped up to t_ns; false when a frame cannot be read.
   bool PublishUpTo(std::int64_t t_ns);
 

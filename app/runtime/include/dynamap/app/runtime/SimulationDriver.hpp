@@ -34,8 +34,6 @@ class SimulationDriver final : public SensorDriver {
 
  private:
   void Publish(robotio::sim::SimOutput& out);
-  // Lockstep: waits until every worker has caught up with simulated time `t_ns`.
-  bool WaitForWorkers(std::int64_t t_ns);
 
   std::unique_ptr<robotio::sim::Simulator> simulator_;
   Mediator& mediator_;

@@ -56,4 +56,9 @@ struct RecordingDevices {
 [[nodiscard]] Expected<std::vector<std::unique_ptr<OpenNiCamera>>> OpenRecordingCameras(
     const std::vector<RecordingCameraConfig>& configs);
 
+// Both steps for `rig` (CameraConfigsForRig, OpenRecordingCameras), the cameras and their
+// names put into `devices`; the first failure is the Error and leaves `devices` as it was.
+[[nodiscard]] Status OpenRigCameras(const Rig& rig, const std::vector<std::string>& specs,
+                                    RecordingDevices* devices);
+
 }  // namespace dynamap::robotio::hardware
