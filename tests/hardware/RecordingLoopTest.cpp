@@ -174,6 +174,7 @@ class RecordingLoopTest : public test::EmulatedRobotTest {
                               [this](const RecordingProgress& p) {
                                 if (p.deadman_held) saw_deadman_ = true;
                                 odometry_written_ = p.odometry;
+                                imu_written_ = p.imu;
                               });
     });
   }
@@ -187,6 +188,7 @@ class RecordingLoopTest : public test::EmulatedRobotTest {
   std::atomic<bool> interrupt_{false};
   std::atomic<bool> saw_deadman_{false};
   std::atomic<std::uint64_t> odometry_written_{0};
+  std::atomic<std::uint64_t> imu_written_{0};
 };
 
 TEST_F(RecordingLoopTest, DrivesWithThePadRecordsOdometryAndGyroAndEndsOnStart) {
@@ -204,7 +206,8 @@ TEST_F(RecordingLoopTest, DrivesWithThePadRecordsOdometryAndGyroAndEndsOnStart) 
   EXPECT_TRUE(WaitUntil([&] { return odometry_written_ > 0; }));  // Some readings at rest.
   rmp_.SetWheelCounts(5000 + static_cast<std::int32_t>(kCountsPerM),
                       -7000 + static_cast<std::int32_t>(2 * kCountsPerM));
-  EXPECT_TRUE(WaitUntil([&] { return odometry_written_ > 20; }));
+  // Both streams past 20 readings (on a loaded machine the gyro's may lag the wheels').
+  EXPECT_TRUE(WaitUntil([&] { return odometry_written_ > 20 && imu_written_ > 20; }));
   Pad(JS_EVENT_BUTTON, 7, 1);  // Start.
   ASSERT_EQ(running.wait_for(std::chrono::seconds(3)), std::future_status::ready);
   const RecordingLoopResult result = running.get();
