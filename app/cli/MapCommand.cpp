@@ -41,9 +41,12 @@ struct MapOptions {
   std::string slam;       // SLAM settings file (keys of mapping::SlamConfig); "" = defaults.
   std::string slam_odometry = "wheels";  // Or "groundtruth" (diagnosis, see SlamRunOptions).
   std::string mode = "playback";       // Run mode of the SLAM pass (--poses slam).
+  std::string mapping;  // Map settings file (keys of mapping::MappingConfig); "" = defaults.
   std::string update = "dynamic";
   double resolution_m = 0.05;
   double max_range_m = 4.0;
+  // Whether --update, --resolution, --max-range were given (they win over --mapping).
+  bool update_given = false, resolution_given = false, max_range_given = false;
   int eval_stride = 2;
   std::string robot = "robots/segway_rmp50.yaml";
   std::string rig;  // Kinect poses and latencies to map with instead of the recorded ones.
@@ -198,10 +201,17 @@ void RunMap(const MapOptions& o) {
   }
   const robotio::RecordingReader& reader = *opened;
   mapping::MappingConfig config;
-  config.resolution_m = o.resolution_m;
-  config.max_range_m = o.max_range_m;
-  config.update = o.update == "regular" ? mapping::UpdateMode::kRegular
-                                        : mapping::UpdateMode::kDynamic;
+  if (!o.mapping.empty()) {
+    auto loaded = mapping::LoadMappingConfig(o.mapping);
+    if (!loaded) FailCommand(kCommand, loaded.error().message);
+    config = *loaded;
+  }
+  if (o.mapping.empty() || o.resolution_given) config.resolution_m = o.resolution_m;
+  if (o.mapping.empty() || o.max_range_given) config.max_range_m = o.max_range_m;
+  if (o.mapping.empty() || o.update_given) {
+    config.update = o.update == "regular" ? mapping::UpdateMode::kRegular
+                                          : mapping::UpdateMode::kDynamic;
+  }
   Check(mapping::ValidateMappingConfig(config, "command line"));
   // With --poses slam a SLAM pass over the recording estimates the pose of every frame
   // (its own dual map steers the dynamic-point filter); the map below is then built from
@@ -266,7 +276,9 @@ void RunMap(const MapOptions& o) {
       {"log", reader.dir()},
       {"poses", o.poses},
       {"rig", o.rig.empty() ? "recorded" : o.rig},
-      {"update", o.update},
+      {"update", mapping::UpdateModeName(config.update)},
+      {"mapping_settings", o.mapping.empty() ? "defaults" : o.mapping},
+      {"persistence_observations", config.persistence_observations},
       {"resolution_m", config.resolution_m},
       {"max_range_m", config.max_range_m},
       {"frames", frames},
@@ -373,14 +385,20 @@ void RegisterMapCommand(CLI::App& app) {
                   "(recorded pace, late frames dropped and counted)")
       ->check(CLI::IsMember({"playback", "simulate"}))
       ->capture_default_str();
-  map->add_option("--update", options->update,
+  map->add_option("--mapping", options->mapping,
+                  "Map settings (YAML under 'mapping:' with the keys of mapping::MappingConfig, "
+                  "e.g. 'persistence_observations: 450') over the defaults; --update, "
+                  "--resolution and --max-range win when given")
+      ->check(CLI::ExistingFile);
+  CLI::Option* update = map->add_option("--update", options->update,
                   "dynamic: Tables 4.1/4.2; regular: standard occupancy update")
       ->check(CLI::IsMember({"dynamic", "regular"}))
       ->capture_default_str();
-  map->add_option("--resolution", options->resolution_m, "Voxel edge (m)")
+  CLI::Option* resolution = map->add_option("--resolution", options->resolution_m, "Voxel edge (m)")
       ->check(CLI::Range(0.005, 2.0))
       ->capture_default_str();
-  map->add_option("--max-range", options->max_range_m, "Insertion range along the ray (m)")
+  CLI::Option* max_range =
+      map->add_option("--max-range", options->max_range_m, "Insertion range along the ray (m)")
       ->check(CLI::Range(0.1, 100.0))
       ->capture_default_str();
   map->add_option("--eval-stride", options->eval_stride,
@@ -393,7 +411,12 @@ void RegisterMapCommand(CLI::App& app) {
                   "Rig file whose Kinect poses and latencies replace the recorded ones (e.g. a "
                   "new calibration); intrinsics stay the recording's")
       ->check(CLI::ExistingFile);
-  map->callback([options] { RunMap(*options); });
+  map->callback([options, update, resolution, max_range] {
+    options->update_given = update->count() > 0;
+    options->resolution_given = resolution->count() > 0;
+    options->max_range_given = max_range->count() > 0;
+    RunMap(*options);
+  });
 }
 
 }  // namespace dynamap::app

@@ -25,15 +25,34 @@ robotio::PointList VoxelGridFilter(const robotio::PointList& points, double leaf
   return result;
 }
 
-robotio::PointList RemoveDynamicPoints(const robotio::PointList& points_base, const DualMap& map,
-                                       const Eigen::Isometry3d& T_map_base) {
+namespace {
+
+// The points (base frame) for whose position in the map `keep` holds.
+template <typename Keep>
+robotio::PointList KeepPoints(const robotio::PointList& points_base,
+                              const Eigen::Isometry3d& T_map_base, Keep keep) {
   const Eigen::Isometry3f T = T_map_base.cast<float>();
   robotio::PointList kept;
   kept.reserve(points_base.size());
   for (const Eigen::Vector3f& p : points_base) {
-    if (!map.IsDynamicOccupied(T * p)) kept.push_back(p);
+    if (keep(T * p)) kept.push_back(p);
   }
   return kept;
+}
+
+}  // namespace
+
+robotio::PointList RemoveDynamicPoints(const robotio::PointList& points_base, const DualMap& map,
+                                       const Eigen::Isometry3d& T_map_base) {
+  return KeepPoints(points_base, T_map_base,
+                    [&map](const Eigen::Vector3f& p_map) { return !map.IsDynamicOccupied(p_map); });
+}
+
+robotio::PointList RemovePointsOfChange(const robotio::PointList& points_base, const DualMap& map,
+                                        const Eigen::Isometry3d& T_map_base) {
+  return KeepPoints(points_base, T_map_base, [&map](const Eigen::Vector3f& p_map) {
+    return !map.IsDynamicOccupied(p_map) && map.StaticState(p_map) != VoxelState::kFree;
+  });
 }
 
 robotio::PointList PreprocessScan(const std::vector<robotio::DepthFrame>& frames,

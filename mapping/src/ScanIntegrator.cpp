@@ -211,13 +211,19 @@ void ScanIntegrator::ClearSurfaceBand() {
 std::optional<Eigen::Vector3f> FreeSpaceEnd(const robotio::DepthRays& rays, std::size_t i,
                                             const UpdateRules& rules) {
   const Eigen::Vector3f& end = rays.ends[i];
-  if (!rays.hit[i] || rules.surface_margin_m <= 0.0f || rays.incidence_cos.empty()) return end;
-  const float margin =
-      rules.surface_margin_m / std::max(rays.incidence_cos[i], rules.min_incidence_cos);
+  if (rules.surface_margin_m <= 0.0f || rays.incidence_cos.empty()) return end;
   const Eigen::Vector3f ray = end - rays.origin;
   const float length = ray.norm();
-  if (length <= margin) return std::nullopt;
-  return end - ray * (margin / length);
+  // A ray cut at max range knows its surface only when it carries the surface's range.
+  const float surface = rays.hit[i] ? length
+                                    : (rays.surface_range_m.empty() ? 0.0f : rays.surface_range_m[i]);
+  if (!(surface > 0.0f)) return end;
+  const float margin =
+      rules.surface_margin_m / std::max(rays.incidence_cos[i], rules.min_incidence_cos);
+  const float free_length = surface - margin;
+  if (free_length <= 0.0f) return std::nullopt;
+  if (free_length >= length) return end;  // The margin lies beyond the cut end.
+  return rays.origin + ray * (free_length / length);
 }
 
 void ScanIntegrator::UpdateTree(DualOcTree& tree, const UpdateRules& rules,

@@ -69,6 +69,7 @@ SlamConfig ParseSlamConfig(robotio::ConfigNode& node) {
                      : reference == "map"    ? ReferenceStrategy::kMap
                                              : ReferenceStrategy::kCombined;
   node.Read("filter_dynamic", &config.filter_dynamic);
+  node.Read("filter_free_space", &config.filter_free_space);
   node.Read("min_inlier_ratio", &config.min_inlier_ratio, 0.0, 1.0);
   node.Read("max_fitness_rmse_m", &config.max_fitness_rmse_m, 1e-4, 1.0);
   node.Read("max_correction_m", &config.max_correction_m, 0.0, 5.0);
@@ -217,7 +218,11 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
     merged.insert(merged.end(), points.begin(), points.end());
   }
   robotio::PointList scan = VoxelGridFilter(merged, map_.config().voxel_filter_m);
-  if (config_.filter_dynamic) scan = RemoveDynamicPoints(scan, map_, step.predicted.ToIsometry());
+  if (config_.filter_dynamic && config_.filter_free_space) {
+    scan = RemovePointsOfChange(scan, map_, step.predicted.ToIsometry());
+  } else if (config_.filter_dynamic) {
+    scan = RemoveDynamicPoints(scan, map_, step.predicted.ToIsometry());
+  }
   step.scan_points = scan.size();
   step.preprocess_s = SecondsSince(t);
 

@@ -18,6 +18,10 @@ UpdateRules UpdateRules::FromConfig(const MappingConfig& config) {
   rules.surface_margin_m = static_cast<float>(config.surface_margin_voxels * config.resolution_m);
   rules.min_incidence_cos = static_cast<float>(config.min_incidence_cos);
   rules.surface_band = config.surface_band;
+  if (config.persistence_observations > 0) {
+    rules.persistence_step = (rules.free_threshold - rules.clamp_min) /
+                             static_cast<float>(config.persistence_observations);
+  }
   return rules;
 }
 
@@ -31,6 +35,15 @@ float DynamicIncrement(StaticState previous, Observation z, const UpdateRules& r
   if (z == Observation::kFree) return r.low;
   // Only an occupied observation of known free space is evidence of motion.
   return previous == StaticState::kFree ? r.high : r.low;
+}
+
+float StaticIncrementWithPersistence(StaticState previous, float dynamic_log_odds,
+                                     Observation z, const UpdateRules& r) {
+  if (r.persistence_step > 0.0f && previous == StaticState::kFree &&
+      z == Observation::kOccupied && dynamic_log_odds >= r.clamp_max) {
+    return r.persistence_step;
+  }
+  return StaticIncrement(previous, z, r);
 }
 
 StaticState ClassifyStatic(float static_log_odds, const UpdateRules& rules) {
@@ -47,7 +60,8 @@ DualLogOdds ApplyObservation(DualLogOdds previous, bool known, Observation z,
   } else {
     const StaticState state =
         known ? ClassifyStatic(previous.static_log_odds, rules) : StaticState::kUnknown;
-    next.static_log_odds += StaticIncrement(state, z, rules);
+    next.static_log_odds +=
+        StaticIncrementWithPersistence(state, next.dynamic_log_odds, z, rules);
     next.dynamic_log_odds += DynamicIncrement(state, z, rules);
   }
   next.static_log_odds = std::clamp(next.static_log_odds, rules.clamp_min, rules.clamp_max);

@@ -63,6 +63,10 @@ std::optional<Eigen::Vector3f> PixelPoint(const DepthFrame& frame, int u, int v,
                          static_cast<float>((v - k.cy) / k.fy) * z, z);
 }
 
+// Depth limit that lets every measurement through (the neighbours of a ray cut at max
+// range lie beyond it too).
+constexpr double kAnyRangeMm = 65535.0;
+
 // Surface tangent at `p` along one image axis, towards the neighbour nearer in depth (the
 // other one may lie across a depth edge).
 std::optional<Eigen::Vector3f> Tangent(const Eigen::Vector3f& p,
@@ -109,11 +113,14 @@ DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
       const Eigen::Vector3f direction(static_cast<float>((u - k.cx) / k.fx),
                                       static_cast<float>((v - k.cy) / k.fy), 1.0f);
       // Beyond max range: free space up to max range along the ray, no endpoint.
-      const float z = hit ? static_cast<float>(d) * 0.001f : max_z / direction.norm();
+      const float measured_z = static_cast<float>(d) * 0.001f;
+      const float z = hit ? measured_z : max_z / direction.norm();
       rays.ends.push_back(T * (direction * z));
       rays.hit.push_back(hit);
-      rays.incidence_cos.push_back(
-          hit ? IncidenceCos(frame, u, v, direction * z, min_mm, max_mm) : 1.0f);
+      // A cut ray carries the incidence and range of the surface it measured beyond.
+      rays.incidence_cos.push_back(IncidenceCos(frame, u, v, direction * measured_z, min_mm,
+                                                hit ? max_mm : kAnyRangeMm));
+      rays.surface_range_m.push_back(measured_z * direction.norm());
     }
   }
   return rays;

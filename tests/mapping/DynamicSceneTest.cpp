@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "SyntheticScene.hpp"
 #include "dynamap/mapping/DualMap.hpp"
 #include "dynamap/mapping/MapEvaluation.hpp"
@@ -53,6 +55,30 @@ TEST(DynamicSceneTest, PreprocessingDropsPointsInDynamicVoxels) {
   const robotio::PointList kept = RemoveDynamicPoints(points, map, Eigen::Isometry3d::Identity());
   ASSERT_EQ(kept.size(), 1u);
   EXPECT_EQ(kept[0], points[1]);
+}
+
+TEST(DynamicSceneTest, PointsInSeenFreeSpaceAreDroppedBeforeTheDynamicMapKnowsThem) {
+  // Only the empty room seen: a person stepping in now is in space seen free.
+  MappingConfig config;
+  DualMap map{config};
+  testing::SyntheticScene scene;
+  const Eigen::Vector3f origin(0.0f, 0.0f, 0.3f);
+  robotio::DepthRays rays = testing::CastScan(scene, origin, 4.0f);
+  for (std::size_t i = 0; i < rays.ends.size(); ++i) {  // Incidence on the wall or the floor.
+    const Eigen::Vector3f d = (rays.ends[i] - origin).normalized();
+    const bool on_wall = std::abs(rays.ends[i].x() - scene.wall_x) < 1e-3f;
+    rays.incidence_cos.push_back(rays.hit[i] ? std::abs(on_wall ? d.x() : d.z()) : 1.0f);
+  }
+  for (int scan = 0; scan < 5; ++scan) map.InsertRays(rays);
+  const robotio::PointList points = {
+      Eigen::Vector3f(1.62f, 0.42f, 0.32f),   // The person, in free space.
+      Eigen::Vector3f(3.02f, 0.52f, 0.32f),   // The wall.
+      Eigen::Vector3f(2.97f, 0.52f, 0.32f)};  // The wall predicted 5 cm in front of it.
+  EXPECT_EQ(RemoveDynamicPoints(points, map, Eigen::Isometry3d::Identity()).size(), 3u);
+  const robotio::PointList kept = RemovePointsOfChange(points, map, Eigen::Isometry3d::Identity());
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_EQ(kept[0], points[1]);
+  EXPECT_EQ(kept[1], points[2]);
 }
 
 TEST(DynamicSceneTest, VoxelGridLeavesOnePointPerVoxel) {

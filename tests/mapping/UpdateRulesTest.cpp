@@ -93,6 +93,46 @@ TEST(FreeThresholdTest, OneGrazingMissDoesNotBarAVoxelFromTheStaticMap) {
   EXPECT_GT(appeared.dynamic_log_odds, free.dynamic_log_odds);
 }
 
+// Observes a voxel of well-known free space occupied `hits` times in a row.
+DualLogOdds OccupyFreeSpace(const UpdateRules& rules, int hits) {
+  DualLogOdds voxel{rules.clamp_min, rules.clamp_min};
+  for (int i = 0; i < hits; ++i) voxel = ApplyObservation(voxel, true, Observation::kOccupied, rules);
+  return voxel;
+}
+
+TEST(PersistenceTest, ALastingChangeEntersTheStaticMapAndAShortStayDoesNot) {
+  MappingConfig config;
+  config.persistence_observations = 300;
+  const UpdateRules rules = UpdateRules::FromConfig(config);
+  const float threshold = rules.threshold;
+  // Two thirds of the way (a person standing for 7 s in view): still dynamic only.
+  const DualLogOdds person = OccupyFreeSpace(rules, 200);
+  EXPECT_LT(person.static_log_odds, threshold);
+  EXPECT_EQ(ClassifyStatic(person.static_log_odds, rules), StaticState::kFree);
+  EXPECT_GE(person.dynamic_log_odds, threshold);
+  // A closed door: static, and out of the dynamic map, soon after the 300 observations.
+  const DualLogOdds door = OccupyFreeSpace(rules, 330);
+  EXPECT_GE(door.static_log_odds, threshold);
+  EXPECT_LT(door.dynamic_log_odds, threshold);
+  // A free observation sets the count back: the same 330 hits with one miss in the middle
+  // do not make it static.
+  DualLogOdds interrupted = OccupyFreeSpace(rules, 165);
+  interrupted = ApplyObservation(interrupted, true, Observation::kFree, rules);
+  for (int i = 0; i < 165; ++i) {
+    interrupted = ApplyObservation(interrupted, true, Observation::kOccupied, rules);
+  }
+  EXPECT_LT(interrupted.static_log_odds, threshold);
+}
+
+TEST(PersistenceTest, OffIsTheThesisRule) {
+  MappingConfig config;
+  config.persistence_observations = 0;
+  const UpdateRules rules = UpdateRules::FromConfig(config);
+  const DualLogOdds forever = OccupyFreeSpace(rules, 5000);
+  EXPECT_FLOAT_EQ(forever.static_log_odds, rules.clamp_min);
+  EXPECT_FLOAT_EQ(forever.dynamic_log_odds, rules.clamp_max);
+}
+
 TEST(MappingConfigTest, FreeThresholdAboveTheOccupancyThresholdIsRejected) {
   MappingConfig config;
   config.free_threshold = 0.6;
@@ -118,6 +158,10 @@ TEST(MappingConfigTest, ParsesYamlAndRejectsBadValuesNamingTheKey) {
   EXPECT_DOUBLE_EQ(surface->surface_margin_voxels, 2.0);
   EXPECT_FALSE(surface->surface_band);
   EXPECT_FALSE(parse("mapping:\n  min_incidence_cos: 0\n"));
+  auto persistence = parse("mapping:\n  persistence_observations: 0\n");
+  ASSERT_TRUE(persistence) << persistence.error().message;
+  EXPECT_EQ(persistence->persistence_observations, 0);
+  EXPECT_FALSE(parse("mapping:\n  persistence_observations: -1\n"));
 
   auto bad_range = parse("mapping:\n  prob_high: 0.4\n");
   ASSERT_FALSE(bad_range);

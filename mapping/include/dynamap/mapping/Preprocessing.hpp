@@ -22,6 +22,15 @@ namespace dynamap::mapping {
                                                      const DualMap& map,
                                                      const Eigen::Isometry3d& T_map_base);
 
+// Keeps the points whose voxel is neither occupied in the dynamic map nor free in the
+// static map: a point in space seen free before is something that has appeared there (a
+// person walking into view) even before the dynamic map knows it. Surfaces stay: the
+// free space stops surface_margin_voxels short of them, so a point predicted up to that
+// far in front of its surface still lands in a voxel that is not free.
+[[nodiscard]] robotio::PointList RemovePointsOfChange(const robotio::PointList& points_base,
+                                                      const DualMap& map,
+                                                      const Eigen::Isometry3d& T_map_base);
+
 // The whole step for one time instant: frames[i] from rig.kinects[frames[i].sensor_id],
 // merged in base, filtered with config.voxel_filter_m, dynamic points removed.
 [[nodiscard]] robotio::PointList PreprocessScan(const std::vector<robotio::DepthFrame>& frames,

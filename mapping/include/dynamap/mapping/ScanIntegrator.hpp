@@ -32,10 +32,12 @@ struct ScanStatistics {
 // Why it is fast: per-scan deduplication in 8x8x8-voxel bit blocks (no hashing per ray
 // step), blocks visited in Morton order so each tree path is walked once, and inner nodes
 // aggregated and pruned once, on the way back up, instead of after every voxel.
-// Where ray `i` stops observing free space: its end point, or for a hit with a known
-// incidence, the point surface_margin_m / max(incidence_cos, min_incidence_cos) before it
-// (where the ray comes within surface_margin_m of the surface plane). nullopt when the
-// margin is longer than the ray.
+// Where ray `i` stops observing free space: its end point, or with a known incidence, the
+// point surface_margin_m / max(incidence_cos, min_incidence_cos) before the surface it
+// measured (where the ray comes within surface_margin_m of the surface plane); for a ray
+// cut at max range that point when it lies before the cut end (the floor just beyond max
+// range is grazed by the ray's last decimetres). nullopt when the margin is longer than
+// the ray.
 [[nodiscard]] std::optional<Eigen::Vector3f> FreeSpaceEnd(const robotio::DepthRays& rays,
                                                           std::size_t i, const UpdateRules& rules);
 

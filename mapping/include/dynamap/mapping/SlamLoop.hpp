@@ -31,6 +31,9 @@ struct SlamConfig {
   RegistrationConfig registration;  // ICP settings (planar point-to-plane by default).
   // Drop scan points in dynamic-occupied voxels before registering (thesis 5.3).
   bool filter_dynamic = true;
+  // Also drop points in voxels the static map holds as free (RemovePointsOfChange): a
+  // person walking into view is in seen-free space before the dynamic map knows them.
+  bool filter_free_space = false;
   double min_inlier_ratio = 0.6;     // Share of scan points with a partner, to accept.
   double max_fitness_rmse_m = 0.06;  // m, RMS point distance after ICP, to accept.
   // Plausibility: the correction to odometry (in the directions the scan constrains) may

@@ -24,6 +24,9 @@ struct UpdateRules {
   float surface_margin_m = 0.0f;  // m, surface_margin_voxels * resolution_m.
   float min_incidence_cos = 1.0f;
   bool surface_band = false;
+  // Static increment of an occupied observation of a free voxel whose dynamic channel is
+  // at clamp_max (MappingConfig::persistence_observations); 0 = Table 4.1's Low.
+  float persistence_step = 0.0f;
 
   [[nodiscard]] static UpdateRules FromConfig(const MappingConfig& config);
 };
@@ -41,6 +44,12 @@ struct DualLogOdds {
 
 // Classifies a known voxel's static log-odds; too little evidence either way is unknown.
 [[nodiscard]] StaticState ClassifyStatic(float static_log_odds, const UpdateRules& rules);
+
+// Table 4.1's increment, except for a lasting change: an occupied observation of free
+// space that the dynamic channel has held occupied (at clamp_max) raises the static
+// channel by persistence_step instead of lowering it.
+[[nodiscard]] float StaticIncrementWithPersistence(StaticState previous, float dynamic_log_odds,
+                                                   Observation z, const UpdateRules& r);
 
 // The new values of a voxel after one observation. `known` is false for a voxel never
 // observed before (its values are then ignored and start from the prior). In regular

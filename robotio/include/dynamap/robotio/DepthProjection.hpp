@@ -31,8 +31,12 @@ struct DepthRays {
   std::vector<bool> hit;
   // Per ray, |cos| of the angle between the ray and the normal of the surface it hit (1 =
   // head-on, towards 0 = grazing), from the neighbouring pixels; 0 when they give no
-  // normal, 1 for rays without a hit. Empty when no ray has it (rays made from points).
+  // normal. A ray cut at max range carries the incidence of the surface measured beyond.
+  // Empty when no ray has it (rays made from points).
   std::vector<float> incidence_cos;
+  // Per ray, m from the origin to the measured surface: the end's distance for a hit,
+  // farther for a ray cut at max range (its surface lies beyond). Empty with incidence_cos.
+  std::vector<float> surface_range_m;
 };
 [[nodiscard]] DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
                                     const Eigen::Isometry3d& T_target_base, int stride = 1);
