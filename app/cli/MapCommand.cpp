@@ -17,6 +17,7 @@
 #include "dynamap/mapping/MapEvaluation.hpp"
 #include "dynamap/mapping/MapExport.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
+#include "dynamap/mapping/MappingConfig.hpp"
 #include "dynamap/mapping/PointCloudFiles.hpp"
 #include "dynamap/mapping/TrajectoryEvaluation.hpp"
 #include "dynamap/robotio/AtomicFile.hpp"
@@ -41,12 +42,12 @@ struct MapOptions {
   std::string slam;       // SLAM settings file (keys of mapping::SlamConfig); "" = defaults.
   std::string slam_odometry = "wheels";  // Or "groundtruth" (diagnosis, see SlamRunOptions).
   std::string mode = "playback";       // Run mode of the SLAM pass (--poses slam).
-  std::string mapping;  // Map settings file (keys of mapping::MappingConfig); "" = defaults.
-  std::string update = "dynamic";
-  double resolution_m = 0.05;
-  double max_range_m = 4.0;
-  // Whether --update, --resolution, --max-range were given (they win over --mapping).
-  bool update_given = false, resolution_given = false, max_range_given = false;
+  std::string mapping_file;  // Map settings file (keys of mapping::MappingConfig); "" = defaults.
+  // The map settings' defaults; given on the command line they win over --mapping.
+  std::string update = mapping::UpdateModeName(mapping::MappingConfig{}.update);
+  double resolution_m = mapping::MappingConfig{}.resolution_m;
+  double max_range_m = mapping::MappingConfig{}.max_range_m;
+  bool update_given = false, resolution_given = false, max_range_given = false;  // On the command line.
   int eval_stride = 2;
   std::string robot = "robots/segway_rmp50.yaml";
   std::string rig;  // Kinect poses and latencies to map with instead of the recorded ones.
@@ -201,14 +202,14 @@ void RunMap(const MapOptions& o) {
   }
   const robotio::RecordingReader& reader = *opened;
   mapping::MappingConfig config;
-  if (!o.mapping.empty()) {
-    auto loaded = mapping::LoadMappingConfig(o.mapping);
+  if (!o.mapping_file.empty()) {
+    auto loaded = mapping::LoadMappingConfig(o.mapping_file);
     if (!loaded) FailCommand(kCommand, loaded.error().message);
     config = *loaded;
   }
-  if (o.mapping.empty() || o.resolution_given) config.resolution_m = o.resolution_m;
-  if (o.mapping.empty() || o.max_range_given) config.max_range_m = o.max_range_m;
-  if (o.mapping.empty() || o.update_given) {
+  if (o.resolution_given) config.resolution_m = o.resolution_m;
+  if (o.max_range_given) config.max_range_m = o.max_range_m;
+  if (o.update_given) {
     config.update = o.update == "regular" ? mapping::UpdateMode::kRegular
                                           : mapping::UpdateMode::kDynamic;
   }
@@ -277,7 +278,7 @@ void RunMap(const MapOptions& o) {
       {"poses", o.poses},
       {"rig", o.rig.empty() ? "recorded" : o.rig},
       {"update", mapping::UpdateModeName(config.update)},
-      {"mapping_settings", o.mapping.empty() ? "defaults" : o.mapping},
+      {"mapping_settings", o.mapping_file.empty() ? "defaults" : o.mapping_file},
       {"persistence_observations", config.persistence_observations},
       {"resolution_m", config.resolution_m},
       {"max_range_m", config.max_range_m},
@@ -385,7 +386,7 @@ void RegisterMapCommand(CLI::App& app) {
                   "(recorded pace, late frames dropped and counted)")
       ->check(CLI::IsMember({"playback", "simulate"}))
       ->capture_default_str();
-  map->add_option("--mapping", options->mapping,
+  map->add_option("--mapping", options->mapping_file,
                   "Map settings (YAML under 'mapping:' with the keys of mapping::MappingConfig, "
                   "e.g. 'persistence_observations: 450') over the defaults; --update, "
                   "--resolution and --max-range win when given")

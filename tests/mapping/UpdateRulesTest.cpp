@@ -158,9 +158,9 @@ TEST(MappingConfigTest, ParsesYamlAndRejectsBadValuesNamingTheKey) {
   EXPECT_DOUBLE_EQ(surface->surface_margin_voxels, 2.0);
   EXPECT_FALSE(surface->surface_band);
   EXPECT_FALSE(parse("mapping:\n  min_incidence_cos: 0\n"));
-  auto persistence = parse("mapping:\n  persistence_observations: 0\n");
+  auto persistence = parse("mapping:\n  persistence_observations: 450\n");
   ASSERT_TRUE(persistence) << persistence.error().message;
-  EXPECT_EQ(persistence->persistence_observations, 0);
+  EXPECT_EQ(persistence->persistence_observations, 450);
   EXPECT_FALSE(parse("mapping:\n  persistence_observations: -1\n"));
 
   auto bad_range = parse("mapping:\n  prob_high: 0.4\n");

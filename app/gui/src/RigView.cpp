@@ -54,12 +54,17 @@ vtkSmartPointer<vtkTransform> ToVtk(const Eigen::Isometry3d& pose) {
   return transform;
 }
 
-vtkSmartPointer<vtkActor> Actor(vtkAlgorithmOutput* port, const Rgb& rgb, double opacity) {
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputConnection(port);
+vtkSmartPointer<vtkActor> ColouredActor(vtkPolyDataMapper* mapper, const Rgb& rgb) {
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(rgb[0], rgb[1], rgb[2]);
+  return actor;
+}
+
+vtkSmartPointer<vtkActor> Actor(vtkAlgorithmOutput* port, const Rgb& rgb, double opacity) {
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputConnection(port);
+  auto actor = ColouredActor(mapper, rgb);
   actor->GetProperty()->SetOpacity(opacity);
   return actor;
 }
@@ -89,14 +94,13 @@ vtkSmartPointer<vtkActor> Frustum(const Eigen::Isometry3d& T_base_kinect, const 
   data->SetLines(lines);
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   mapper->SetInputData(data);
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(rgb[0], rgb[1], rgb[2]);
+  auto actor = ColouredActor(mapper, rgb);
   actor->GetProperty()->SetLineWidth(static_cast<float>(line_width));
   return actor;
 }
 
-// The Kinect's bar (28 × 6 × 4 cm, long along the optical x axis) at T_base_kinect.
+// The Kinect's bar at T_base_kinect: 28 cm along the optical x axis (image right), 4 cm
+// along y (image down), 6 cm along z (the viewing direction).
 vtkSmartPointer<vtkActor> KinectBody(const Eigen::Isometry3d& T_base_kinect, const Rgb& rgb) {
   auto box = vtkSmartPointer<vtkCubeSource>::New();
   box->SetXLength(0.28);
