@@ -12,6 +12,7 @@
 
 #include "cli/CommandSupport.hpp"
 #include "cli/ProgressLine.hpp"
+#include "cli/RecordingScans.hpp"
 #include "cli/SlamRun.hpp"
 #include "dynamap/mapping/DualMap.hpp"
 #include "dynamap/mapping/MapEvaluation.hpp"
@@ -227,34 +228,48 @@ void RunMap(const MapOptions& o) {
   double load_s = 0.0, project_s = 0.0, insert_s = 0.0, label_s = 0.0;
   std::size_t frames = 0, skipped = 0;
   const auto& entries = reader.depth_entries();
+  // Both Kinects of one instant are inserted as one scan: a voxel both see is updated
+  // once, so evidence accumulates at the same pace wherever it is seen from.
+  const RecordingScans grouped = GroupRecordingIntoScans(reader, reader.rig());
+  skipped = entries.size() - grouped.order.size();
   ProgressLine progress("mapping");
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    auto t = Clock::now();
-    auto frame = reader.LoadDepth(entries[i]);
-    if (!frame) FailCommand(kCommand, frame.error().message);
-    load_s += Seconds(t);
-    const auto sensor = static_cast<std::size_t>(frame->sensor_id);
-    if (sensor >= reader.rig().kinects.size()) {
-      ++skipped;
-      continue;
+  std::size_t done = 0;
+  for (const std::vector<std::size_t>& scan : grouped.scans) {
+    std::vector<robotio::DepthFrame> scan_frames;
+    std::vector<robotio::KinectMount> mounts;
+    std::vector<Eigen::Isometry3d> scan_poses;
+    std::vector<robotio::DepthRays> rays;
+    for (std::size_t k : scan) {
+      auto t = Clock::now();
+      auto frame = reader.LoadDepth(entries[grouped.order[k]]);
+      if (!frame) FailCommand(kCommand, frame.error().message);
+      load_s += Seconds(t);
+      robotio::KinectMount mount = reader.rig().kinects[static_cast<std::size_t>(frame->sensor_id)];
+      mount.max_range_m = std::min(mount.max_range_m, config.max_range_m);
+      const Eigen::Isometry3d T_map_base = PoseAtStamp(poses, frame->stamp_ns);
+      t = Clock::now();
+      rays.push_back(robotio::DepthToRays(*frame, mount, T_map_base));
+      project_s += Seconds(t);
+      scan_frames.push_back(std::move(*frame));
+      mounts.push_back(mount);
+      scan_poses.push_back(T_map_base);
     }
-    robotio::KinectMount mount = reader.rig().kinects[sensor];
-    mount.max_range_m = std::min(mount.max_range_m, config.max_range_m);
-    const Eigen::Isometry3d T_map_base = PoseAtStamp(poses, frame->stamp_ns);
-    t = Clock::now();
-    const robotio::DepthRays rays = robotio::DepthToRays(*frame, mount, T_map_base);
-    project_s += Seconds(t);
-    t = Clock::now();
-    map.InsertRays(rays);
+    auto t = Clock::now();
+    map.InsertScan(rays);
     insert_s += Seconds(t);
-    ++frames;
+    frames += scan.size();
     if (labelled) {
       t = Clock::now();
-      if (auto labels = reader.LoadLabels(entries[i])) accuracy.Add(*frame, *labels, mount, T_map_base);
+      for (std::size_t j = 0; j < scan.size(); ++j) {
+        if (auto labels = reader.LoadLabels(entries[grouped.order[scan[j]]])) {
+          accuracy.Add(scan_frames[j], *labels, mounts[j], scan_poses[j]);
+        }
+      }
       label_s += Seconds(t);
     }
-    progress.Update(static_cast<double>(i + 1) / static_cast<double>(entries.size()),
-                    std::to_string(i + 1) + "/" + std::to_string(entries.size()) + " frames");
+    done += scan.size();
+    progress.Update(static_cast<double>(done) / static_cast<double>(grouped.order.size()),
+                    std::to_string(done) + "/" + std::to_string(grouped.order.size()) + " frames");
   }
   progress.Finish(std::to_string(frames) + " frames");
 
@@ -302,6 +317,9 @@ void RunMap(const MapOptions& o) {
     report["associated_accuracy"] = a.associated_accuracy;
     report["static_points"] = a.static_points;
     report["dynamic_points"] = a.dynamic_points;
+    report["dynamic_points_near_floor"] = a.dynamic_points_near_floor;
+    report["dynamic_kept_near_floor"] = a.dynamic_kept_near_floor;
+    report["dynamic_accuracy_above_floor"] = a.dynamic_accuracy_above_floor;
     report["evaluation_pixel_stride"] = o.eval_stride;
   }
   if (const auto samples = SurfaceSamples(reader, config.resolution_m / 2.0)) {
@@ -388,7 +406,7 @@ void RegisterMapCommand(CLI::App& app) {
       ->capture_default_str();
   map->add_option("--mapping", options->mapping_file,
                   "Map settings (YAML under 'mapping:' with the keys of mapping::MappingConfig, "
-                  "e.g. 'persistence_observations: 450') over the defaults; --update, "
+                  "e.g. 'persistence_observations: 0') over the defaults; --update, "
                   "--resolution and --max-range win when given")
       ->check(CLI::ExistingFile);
   CLI::Option* update = map->add_option("--update", options->update,

@@ -8,6 +8,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "cli/RecordingScans.hpp"
 #include "dynamap/robotio/Time.hpp"
 
 namespace dynamap::app {
@@ -96,29 +97,10 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
   SlamRunResult result;
   result.reference = options.slam.reference;
   const robotio::Rig& rig = reader.rig();
-  // Capture stamps of the entries (receive stamp minus the sensor's latency), in order.
   const auto& entries = reader.depth_entries();
-  std::vector<std::size_t> order;
-  std::vector<std::int64_t> capture_ns(entries.size(), 0);
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    const auto sensor = static_cast<std::size_t>(entries[i].sensor_id);
-    if (sensor >= rig.kinects.size()) continue;
-    capture_ns[i] =
-        entries[i].received_ns - robotio::SecondsToNanos(rig.kinects[sensor].latency_s);
-    order.push_back(i);
-  }
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return capture_ns[a] < capture_ns[b]; });
-  std::vector<std::int64_t> stamps;
-  std::vector<int> sensors;
-  for (std::size_t i : order) {
-    stamps.push_back(capture_ns[i]);
-    sensors.push_back(entries[i].sensor_id);
-  }
-  // Frames of one instant: the rig's Kinects are unsynchronised, up to a frame apart.
-  double period_s = 1.0 / 30.0;
-  for (const auto& mount : rig.kinects) period_s = std::max(period_s, 1.0 / mount.rate_hz);
-  const auto scans = mapping::GroupIntoScans(stamps, sensors, robotio::SecondsToNanos(period_s * 0.75));
+  const RecordingScans grouped = GroupRecordingIntoScans(reader, rig);
+  const std::vector<std::size_t>& order = grouped.order;
+  const auto& scans = grouped.scans;
 
   // Without odometry (a TUM RGB-D sequence, a rig carried by hand) registration alone
   // tracks the camera in 6-DoF.

@@ -32,6 +32,26 @@ ScanStatistics DualMap::InsertRays(const robotio::DepthRays& rays) {
   return integrator_.Insert(*tree_, rays, rules_);
 }
 
+ScanStatistics DualMap::InsertScan(const std::vector<robotio::DepthRays>& ray_sets) {
+  std::vector<const robotio::DepthRays*> sets;
+  sets.reserve(ray_sets.size());
+  for (const robotio::DepthRays& rays : ray_sets) sets.push_back(&rays);
+  return integrator_.Insert(*tree_, sets, rules_);
+}
+
+ScanStatistics DualMap::InsertDepthFrames(const std::vector<const robotio::DepthFrame*>& frames,
+                                          const std::vector<robotio::KinectMount>& mounts,
+                                          const std::vector<Eigen::Isometry3d>& T_map_base) {
+  std::vector<robotio::DepthRays> ray_sets;
+  ray_sets.reserve(frames.size());
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    robotio::KinectMount limited = mounts[i];
+    limited.max_range_m = std::min(limited.max_range_m, config_.max_range_m);
+    ray_sets.push_back(robotio::DepthToRays(*frames[i], limited, T_map_base[i]));
+  }
+  return InsertScan(ray_sets);
+}
+
 ScanStatistics DualMap::InsertDepthFrame(const robotio::DepthFrame& frame,
                                          const robotio::KinectMount& mount,
                                          const Eigen::Isometry3d& T_map_base) {

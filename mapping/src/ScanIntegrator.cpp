@@ -110,64 +110,103 @@ ScanIntegrator::Block& ScanIntegrator::BlockFor(const octomap::OcTreeKey& key) {
 
 ScanStatistics ScanIntegrator::Insert(DualOcTree& tree, const robotio::DepthRays& rays,
                                       const UpdateRules& rules) {
-  ScanStatistics stats;
-  stats.rays = rays.ends.size();
-  const octomap::point3d origin(rays.origin.x(), rays.origin.y(), rays.origin.z());
-  octomap::OcTreeKey origin_key;
-  if (!tree.coordToKeyChecked(origin, origin_key)) return stats;
+  return Insert(tree, std::vector<const robotio::DepthRays*>{&rays}, rules);
+}
 
-  // End voxels and the box that holds every ray (a ray's voxels lie between its ends).
-  end_keys_.resize(rays.ends.size());
-  octomap::OcTreeKey min_key = origin_key, max_key = origin_key;
-  std::vector<bool> valid(rays.ends.size(), false);
-  for (std::size_t i = 0; i < rays.ends.size(); ++i) {
-    const Eigen::Vector3f& p = rays.ends[i];
-    if (!tree.coordToKeyChecked(octomap::point3d(p.x(), p.y(), p.z()), end_keys_[i])) continue;
-    valid[i] = true;
+ScanStatistics ScanIntegrator::Insert(DualOcTree& tree,
+                                      const std::vector<const robotio::DepthRays*>& ray_sets,
+                                      const UpdateRules& rules) {
+  ScanStatistics stats;
+  // Origins and end voxels of every set, and the box that holds every ray (a ray's voxels
+  // lie between its ends). A set whose origin lies outside the tree is left out.
+  std::vector<octomap::OcTreeKey> origin_keys(ray_sets.size());
+  std::vector<bool> usable(ray_sets.size(), false);
+  std::vector<std::size_t> first_end(ray_sets.size() + 1, 0);
+  std::size_t total = 0;
+  bool any = false;
+  octomap::OcTreeKey min_key, max_key;
+  for (std::size_t s = 0; s < ray_sets.size(); ++s) {
+    const robotio::DepthRays& rays = *ray_sets[s];
+    first_end[s] = total;
+    const Eigen::Vector3f& o = rays.origin;
+    if (!tree.coordToKeyChecked(octomap::point3d(o.x(), o.y(), o.z()), origin_keys[s])) continue;
+    usable[s] = true;
+    stats.rays += rays.ends.size();
+    total += rays.ends.size();
+    if (!any) min_key = max_key = origin_keys[s];
+    any = true;
     for (int a = 0; a < 3; ++a) {
-      min_key[a] = std::min(min_key[a], end_keys_[i][a]);
-      max_key[a] = std::max(max_key[a], end_keys_[i][a]);
+      min_key[a] = std::min(min_key[a], origin_keys[s][a]);
+      max_key[a] = std::max(max_key[a], origin_keys[s][a]);
+    }
+  }
+  first_end[ray_sets.size()] = total;
+  if (!any) return stats;
+  end_keys_.resize(total);
+  end_valid_.assign(total, false);
+  for (std::size_t s = 0; s < ray_sets.size(); ++s) {
+    if (!usable[s]) continue;
+    const robotio::DepthRays& rays = *ray_sets[s];
+    for (std::size_t i = 0; i < rays.ends.size(); ++i) {
+      const Eigen::Vector3f& p = rays.ends[i];
+      octomap::OcTreeKey& key = end_keys_[first_end[s] + i];
+      if (!tree.coordToKeyChecked(octomap::point3d(p.x(), p.y(), p.z()), key)) continue;
+      end_valid_[first_end[s] + i] = true;
+      for (int a = 0; a < 3; ++a) {
+        min_key[a] = std::min(min_key[a], key[a]);
+        max_key[a] = std::max(max_key[a], key[a]);
+      }
     }
   }
   PrepareIndex(min_key, max_key);
 
-  unique_ends_.clear();
   hit_keys_.clear();
-  for (std::size_t i = 0; i < rays.ends.size(); ++i) {
-    if (!valid[i]) continue;
-    if (rays.hit[i]) {
-      const octomap::OcTreeKey& key = end_keys_[i];
+  for (std::size_t s = 0; s < ray_sets.size(); ++s) {
+    if (!usable[s]) continue;
+    const robotio::DepthRays& rays = *ray_sets[s];
+    const octomap::point3d origin(rays.origin.x(), rays.origin.y(), rays.origin.z());
+    // Hits, and the distinct free-space end voxels of this origin.
+    unique_ends_.clear();
+    for (std::size_t i = 0; i < rays.ends.size(); ++i) {
+      if (!end_valid_[first_end[s] + i]) continue;
+      const octomap::OcTreeKey& end_key = end_keys_[first_end[s] + i];
+      if (rays.hit[i]) {
+        Block& block = BlockFor(end_key);
+        const std::uint32_t bit = InBlockIndex(end_key);
+        const std::uint64_t mask = std::uint64_t{1} << (bit & 63u);
+        if ((block.hit[bit >> 6] & mask) == 0) hit_keys_.push_back(end_key);
+        block.hit[bit >> 6] |= mask;
+      }
+      const std::optional<Eigen::Vector3f> free_end = FreeSpaceEnd(rays, i, rules);
+      if (!free_end) continue;
+      octomap::OcTreeKey key = end_key;
+      if (*free_end != rays.ends[i] &&
+          !tree.coordToKeyChecked(octomap::point3d(free_end->x(), free_end->y(), free_end->z()),
+                                  key)) {
+        continue;
+      }
       Block& block = BlockFor(key);
       const std::uint32_t bit = InBlockIndex(key);
       const std::uint64_t mask = std::uint64_t{1} << (bit & 63u);
-      if ((block.hit[bit >> 6] & mask) == 0) hit_keys_.push_back(key);
-      block.hit[bit >> 6] |= mask;
+      if ((block.end[bit >> 6] & mask) == 0) {
+        block.end[bit >> 6] |= mask;
+        unique_ends_.push_back(key);
+      }
     }
-    const std::optional<Eigen::Vector3f> free_end = FreeSpaceEnd(rays, i, rules);
-    if (!free_end) continue;
-    octomap::OcTreeKey key = end_keys_[i];
-    if (*free_end != rays.ends[i] &&
-        !tree.coordToKeyChecked(octomap::point3d(free_end->x(), free_end->y(), free_end->z()), key)) {
-      continue;
-    }
-    Block& block = BlockFor(key);
-    const std::uint32_t bit = InBlockIndex(key);
-    const std::uint64_t mask = std::uint64_t{1} << (bit & 63u);
-    if ((block.end[bit >> 6] & mask) == 0) {
-      block.end[bit >> 6] |= mask;
-      unique_ends_.push_back(key);
-    }
-  }
 
-  // Free space: one trace per distinct free-space end voxel, to its centre (OctoMap's
-  // discretise; the free end of a hit with a margin lies between the origin and the hit).
-  stats.traced_rays = unique_ends_.size();
-  for (const octomap::OcTreeKey& end_key : unique_ends_) {
-    if (!tree.computeRayKeys(origin, tree.keyToCoord(end_key), key_ray_)) continue;
-    for (const octomap::OcTreeKey& key : key_ray_) {
-      Block& block = BlockFor(key);
-      const std::uint32_t bit = InBlockIndex(key);
-      block.free[bit >> 6] |= std::uint64_t{1} << (bit & 63u);
+    // Free space: one trace per distinct free-space end voxel, to its centre (OctoMap's
+    // discretise; the free end of a hit with a margin lies between the origin and the hit).
+    stats.traced_rays += unique_ends_.size();
+    for (const octomap::OcTreeKey& end_key : unique_ends_) {
+      Block& end_block = BlockFor(end_key);
+      const std::uint32_t end_bit = InBlockIndex(end_key);
+      end_block.end[end_bit >> 6] &= ~(std::uint64_t{1} << (end_bit & 63u));  // For the next origin.
+      if (!tree.computeRayKeys(origin, tree.keyToCoord(end_key), key_ray_)) continue;
+      for (const octomap::OcTreeKey& key : key_ray_) {
+        Block& block = BlockFor(key);
+        const std::uint32_t bit = InBlockIndex(key);
+        block.free[bit >> 6] |= std::uint64_t{1} << (bit & 63u);
+      }
     }
   }
   if (rules.surface_band) ClearSurfaceBand();

@@ -278,12 +278,17 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
 
   // Line 11: both maps from the corrected pose, every frame at its own capture time.
   t = Clock::now();
+  std::vector<const robotio::DepthFrame*> insert;
+  std::vector<robotio::KinectMount> mounts;
+  std::vector<Eigen::Isometry3d> placed;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const auto sensor = static_cast<std::size_t>(frames[k].sensor_id);
     if (sensor >= rig_.kinects.size()) continue;
-    map_.InsertDepthFrame(frames[k], rig_.kinects[sensor],
-                          pose_.Compose(frame_offsets[k]).ToIsometry());
+    insert.push_back(&frames[k]);
+    mounts.push_back(rig_.kinects[sensor]);
+    placed.push_back(pose_.Compose(frame_offsets[k]).ToIsometry());
   }
+  map_.InsertDepthFrames(insert, mounts, placed);  // One scan: each voxel updated once.
   previous_scan_map_ = Transformed(sparse, pose_);
   step.update_s = SecondsSince(t);
   return step;

@@ -181,6 +181,63 @@ TEST(DualOcTreeTest, HitBeatsTraversalWithinOneScan) {
   EXPECT_EQ(map.StaticState({0.52f, 0.02f, 0.02f}), VoxelState::kFree);
 }
 
+// Both Kinects of one instant are one scan: a voxel seen from both origins is updated
+// once, and a hit from either beats a traversal by the other.
+TEST(DualOcTreeTest, AScanFromTwoOriginsUpdatesEachVoxelOnce) {
+  DualMap map{ThesisRuleConfig()};
+  // Both rays cross x = 1.02 at y = 0.02 (z = 0.02); the first one ends there.
+  std::vector<robotio::DepthRays> scan = {
+      SingleRay({0.02f, -0.98f, 0.02f}, {1.02f, 0.02f, 0.02f}, true),
+      SingleRay({0.02f, 1.02f, 0.02f}, {2.02f, -0.98f, 0.02f}, true)};
+  map.InsertScan(scan);
+  const DualOcTreeNode* crossing = map.tree().search(1.02, 0.02, 0.02);
+  ASSERT_NE(crossing, nullptr);
+  EXPECT_FLOAT_EQ(crossing->StaticLogOdds(), map.rules().high);  // Hit, not traversed.
+  // Two origins whose rays share their last voxels before a common end.
+  DualMap shared{ThesisRuleConfig()};
+  scan = {SingleRay({0.02f, 0.02f, 0.02f}, {2.02f, 0.02f, 0.02f}, true),
+          SingleRay({0.02f, 0.02f, 0.22f}, {2.02f, 0.02f, 0.02f}, true)};
+  shared.InsertScan(scan);
+  const DualOcTreeNode* traversed = shared.tree().search(1.87, 0.02, 0.02);
+  ASSERT_NE(traversed, nullptr);
+  EXPECT_FLOAT_EQ(traversed->StaticLogOdds(), shared.rules().low);  // One observation.
+  // Inserted one after the other, the same voxel is observed twice.
+  DualMap separate{ThesisRuleConfig()};
+  for (const robotio::DepthRays& rays : scan) separate.InsertRays(rays);
+  EXPECT_FLOAT_EQ(separate.tree().search(1.87, 0.02, 0.02)->StaticLogOdds(),
+                  2.0f * separate.rules().low);
+}
+
+// The lasting-change rule counts scans (instants), not Kinect frames: a change both
+// Kinects see does not turn static twice as fast.
+TEST(DualOcTreeTest, ALastingChangeCountsScansNotKinects) {
+  MappingConfig config;
+  config.persistence_observations = 40;
+  const Eigen::Vector3f low(0.02f, 0.02f, 0.02f), high(0.02f, 0.02f, 0.52f);
+  const Eigen::Vector3f door(1.02f, 0.02f, 0.02f);
+  // Free space through the door voxel first (both rays cross it to a wall), then closed.
+  const std::vector<robotio::DepthRays> open = {SingleRay(low, {2.02f, 0.02f, 0.02f}, true),
+                                                SingleRay(high, {2.02f, 0.02f, -0.48f}, true)};
+  const std::vector<robotio::DepthRays> closed = {SingleRay(low, door, true),
+                                                  SingleRay(high, door, true)};
+  DualMap as_scans{config}, per_kinect{config};
+  for (int i = 0; i < 20; ++i) {
+    as_scans.InsertScan(open);
+    for (const auto& rays : open) per_kinect.InsertRays(rays);
+  }
+  ASSERT_EQ(as_scans.StaticState(door), VoxelState::kFree);
+  for (int i = 0; i < 35; ++i) {
+    as_scans.InsertScan(closed);
+    for (const auto& rays : closed) per_kinect.InsertRays(rays);
+  }
+  EXPECT_TRUE(as_scans.IsDynamicOccupied(door));
+  EXPECT_FALSE(as_scans.IsStaticOccupied(door));
+  EXPECT_TRUE(per_kinect.IsStaticOccupied(door));  // 70 observations.
+  for (int i = 0; i < 25; ++i) as_scans.InsertScan(closed);
+  EXPECT_TRUE(as_scans.IsStaticOccupied(door));
+  EXPECT_FALSE(as_scans.IsDynamicOccupied(door));
+}
+
 TEST(DualOcTreeTest, RaysBeyondMaxRangeClearUpToItWithoutAHit) {
   MappingConfig config = ThesisRuleConfig();  // One pass: free at once.
   config.max_range_m = 2.0;
@@ -283,6 +340,26 @@ TEST(DualOcTreeTest, BatchedUpdateEqualsTheReferenceImplementation) {
       ASSERT_EQ(fast.tree().size(), reference.size()) << "scan " << scan;
       ASSERT_EQ(Serialise(fast.tree()), Serialise(reference)) << "scan " << scan;
     }
+  }
+}
+
+// The same with two origins per scan (the two Kinects of the rig).
+TEST(DualOcTreeTest, BatchedUpdateOfTwoOriginsEqualsTheReferenceImplementation) {
+  MappingConfig config;
+  config.resolution_m = 0.1;
+  DualMap fast{config};
+  DualOcTree reference(config.resolution_m);
+  testing::SyntheticScene scene;
+  for (int scan = 0; scan < 12; ++scan) {
+    scene.boxes = {{{1.5f, -1.0f + 0.15f * scan, -0.5f}, {1.8f, -0.6f + 0.15f * scan, 1.2f}}};
+    const Eigen::Vector3f origin(0.05f * scan, 0.01f * scan, 0.3f);
+    const std::vector<robotio::DepthRays> rays = {
+        testing::CastScan(scene, origin, 4.0f, 1.0f),
+        testing::CastScan(scene, origin + Eigen::Vector3f(0.1f, 0.05f, 0.5f), 4.0f, 1.0f)};
+    fast.InsertScan(rays);
+    testing::ReferenceInsert(reference, rays, fast.rules());
+    ASSERT_EQ(fast.tree().size(), reference.size()) << "scan " << scan;
+    ASSERT_EQ(Serialise(fast.tree()), Serialise(reference)) << "scan " << scan;
   }
 }
 

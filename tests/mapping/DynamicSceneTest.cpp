@@ -126,6 +126,39 @@ TEST(DynamicSceneTest, PointAccuracyScoresKeptStaticAndRemovedDynamicPoints) {
   EXPECT_DOUBLE_EQ(accuracy.associated_accuracy, 1.0);
 }
 
+// A foot in the floor's voxel is kept with the floor: it counts against DA, and the
+// near-floor figures say how much of DA that is.
+TEST(DynamicSceneTest, DynamicPointsInTheFloorLayerAreCountedApart) {
+  DualMap map{MappingConfig{}};
+  robotio::DepthRays floor;
+  floor.origin = Eigen::Vector3f(0.02f, 0.02f, 0.5f);
+  floor.ends = {Eigen::Vector3f(1.02f, 0.02f, 0.02f)};
+  floor.hit = {true};
+  map.InsertRays(floor);
+  ASSERT_TRUE(map.IsStaticOccupied({1.02f, 0.02f, 0.02f}));
+  robotio::DepthFrame depth;
+  depth.width = depth.height = 1;
+  depth.intrinsics.fx = depth.intrinsics.fy = 1.0;
+  depth.intrinsics.cx = depth.intrinsics.cy = 0.0;
+  depth.depth_mm = {1000};
+  robotio::LabelFrame labels;
+  labels.width = labels.height = 1;
+  labels.labels = {static_cast<std::uint16_t>(2 | robotio::LabelFrame::kDynamicBit)};
+  robotio::KinectMount mount;
+  mount.T_base_kinect.linear() = robotio::BodyFromOptical();  // Looking along map x.
+  PointAccuracyCounter counter(map.config().resolution_m, 4.0, 1);
+  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, 0.02);  // Foot: (1.02, 0.02, 0.02).
+  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
+  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, 1.02);  // Chest, never mapped.
+  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
+  const PointAccuracy accuracy = counter.Evaluate(map.tree());
+  EXPECT_EQ(accuracy.dynamic_points, 2u);
+  EXPECT_EQ(accuracy.dynamic_points_near_floor, 1u);
+  EXPECT_EQ(accuracy.dynamic_kept_near_floor, 1u);
+  EXPECT_DOUBLE_EQ(accuracy.dynamic_accuracy, 0.5);
+  EXPECT_DOUBLE_EQ(accuracy.dynamic_accuracy_above_floor, 1.0);
+}
+
 TEST(DynamicSceneTest, SurfacePrecisionAndCompletenessAgainstTrueSamples) {
   const DualMap map = WalkThrough(UpdateMode::kDynamic);
   // True wall samples in the sensor's view (and some far outside it).

@@ -21,22 +21,32 @@ void FinishRecurs(DualOcTree& tree, DualOcTreeNode* node, unsigned depth) {
 }  // namespace
 
 void ReferenceInsert(DualOcTree& tree, const robotio::DepthRays& rays, const UpdateRules& rules) {
-  const octomap::point3d origin(rays.origin.x(), rays.origin.y(), rays.origin.z());
+  ReferenceInsert(tree, std::vector<robotio::DepthRays>{rays}, rules);
+}
+
+void ReferenceInsert(DualOcTree& tree, const std::vector<robotio::DepthRays>& ray_sets,
+                     const UpdateRules& rules) {
   octomap::KeySet free_keys, hit_keys;
   octomap::KeyRay ray;
-  for (std::size_t i = 0; i < rays.ends.size(); ++i) {
-    octomap::OcTreeKey end;
-    const Eigen::Vector3f& p = rays.ends[i];
-    if (!tree.coordToKeyChecked(octomap::point3d(p.x(), p.y(), p.z()), end)) continue;
-    if (rays.hit[i]) hit_keys.insert(end);
-    const std::optional<Eigen::Vector3f> free_end = FreeSpaceEnd(rays, i, rules);
-    octomap::OcTreeKey free_key;
-    if (!free_end || !tree.coordToKeyChecked(
-                         octomap::point3d(free_end->x(), free_end->y(), free_end->z()), free_key)) {
-      continue;
-    }
-    if (tree.computeRayKeys(origin, tree.keyToCoord(free_key), ray)) {
-      free_keys.insert(ray.begin(), ray.end());
+  for (const robotio::DepthRays& rays : ray_sets) {
+    const octomap::point3d origin(rays.origin.x(), rays.origin.y(), rays.origin.z());
+    octomap::OcTreeKey origin_key;
+    if (!tree.coordToKeyChecked(origin, origin_key)) continue;
+    for (std::size_t i = 0; i < rays.ends.size(); ++i) {
+      octomap::OcTreeKey end;
+      const Eigen::Vector3f& p = rays.ends[i];
+      if (!tree.coordToKeyChecked(octomap::point3d(p.x(), p.y(), p.z()), end)) continue;
+      if (rays.hit[i]) hit_keys.insert(end);
+      const std::optional<Eigen::Vector3f> free_end = FreeSpaceEnd(rays, i, rules);
+      octomap::OcTreeKey free_key;
+      if (!free_end ||
+          !tree.coordToKeyChecked(octomap::point3d(free_end->x(), free_end->y(), free_end->z()),
+                                  free_key)) {
+        continue;
+      }
+      if (tree.computeRayKeys(origin, tree.keyToCoord(free_key), ray)) {
+        free_keys.insert(ray.begin(), ray.end());
+      }
     }
   }
   if (rules.surface_band) {
@@ -61,7 +71,8 @@ void ReferenceInsert(DualOcTree& tree, const robotio::DepthRays& rays, const Upd
     DualOcTreeNode* node = root;
     bool is_new = root_new;
     for (unsigned depth = 0; depth < tree.getTreeDepth(); ++depth) {
-      const unsigned index = octomap::computeChildIdx(key, static_cast<int>(tree.getTreeDepth() - 1 - depth));
+      const unsigned index =
+          octomap::computeChildIdx(key, static_cast<int>(tree.getTreeDepth() - 1 - depth));
       if (tree.nodeChildExists(node, index)) {
         node = tree.getNodeChild(node, index);
         is_new = false;

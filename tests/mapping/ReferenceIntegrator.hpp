@@ -3,6 +3,8 @@
 // which the batched ScanIntegrator must reproduce exactly.
 #pragma once
 
+#include <vector>
+
 #include "dynamap/mapping/DualOcTree.hpp"
 #include "dynamap/mapping/UpdateRules.hpp"
 #include "dynamap/robotio/DepthProjection.hpp"
@@ -10,5 +12,8 @@
 namespace dynamap::mapping::testing {
 
 void ReferenceInsert(DualOcTree& tree, const robotio::DepthRays& rays, const UpdateRules& rules);
+// One scan from several origins: every voxel updated once, a hit from any set wins.
+void ReferenceInsert(DualOcTree& tree, const std::vector<robotio::DepthRays>& ray_sets,
+                     const UpdateRules& rules);
 
 }  // namespace dynamap::mapping::testing

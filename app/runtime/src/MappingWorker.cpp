@@ -115,13 +115,18 @@ void MappingWorker::Process(const std::vector<CapturedFrame>& batch) {
       placed[i] = step.pose.Compose(odometry[0].Between(odometry[i]));
     }
   } else {
+    std::vector<const robotio::DepthFrame*> depths;
+    std::vector<robotio::KinectMount> mounts;
+    std::vector<Eigen::Isometry3d> poses;
     for (std::size_t i = 0; i < frames.size(); ++i) {
       const bool truth = config_.poses == PoseSource::kGroundTruth && frames[i]->true_pose;
       // The odometry frame starts at the start pose, which is the map frame's origin.
       placed[i] = truth ? *frames[i]->true_pose : odometry[i];
-      const auto& mount = rig_.kinects[static_cast<std::size_t>(frames[i]->depth.sensor_id)];
-      (void)map_.InsertDepthFrame(frames[i]->depth, mount, placed[i].ToIsometry());
+      depths.push_back(&frames[i]->depth);
+      mounts.push_back(rig_.kinects[static_cast<std::size_t>(frames[i]->depth.sensor_id)]);
+      poses.push_back(placed[i].ToIsometry());
     }
+    (void)map_.InsertDepthFrames(depths, mounts, poses);  // One scan: each voxel once.
   }
   insert_ms_.push_back(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());

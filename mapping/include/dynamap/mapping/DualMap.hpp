@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <memory>
+#include <vector>
 
 #include "dynamap/mapping/DualOcTree.hpp"
 #include "dynamap/mapping/MappingConfig.hpp"
@@ -26,6 +27,14 @@ class DualMap {
 
   // One scan already as rays in the map frame (robotio::DepthToRays with T_map_base).
   ScanStatistics InsertRays(const robotio::DepthRays& rays);
+  // One scan seen from several origins: both Kinects of one instant, each voxel updated
+  // once (ScanIntegrator). Rays in the map frame.
+  ScanStatistics InsertScan(const std::vector<robotio::DepthRays>& ray_sets);
+  // The frames of one instant, frames[i] taken by mounts[i] at base pose T_map_base[i];
+  // max range as for InsertDepthFrame.
+  ScanStatistics InsertDepthFrames(const std::vector<const robotio::DepthFrame*>& frames,
+                                   const std::vector<robotio::KinectMount>& mounts,
+                                   const std::vector<Eigen::Isometry3d>& T_map_base);
   // One depth frame taken at base pose T_map_base; rays beyond the config's max range
   // clear free space up to it (the mount's own range limits apply first).
   ScanStatistics InsertDepthFrame(const robotio::DepthFrame& frame,

@@ -25,6 +25,13 @@ struct PointAccuracy {
   double static_accuracy = 0.0;      // SA = kept static / all static (1 when none).
   double dynamic_accuracy = 0.0;     // DA = removed dynamic / all dynamic (1 when none).
   double associated_accuracy = 0.0;  // AA = sqrt(SA * DA).
+  // Dynamic points in voxels whose centre lies less than two voxels above the floor plane
+  // (z = 0 of the map), where a person's feet share the floor's voxels and its surface
+  // margin: no free observation reaches them, so they are kept however the map is updated.
+  std::uint64_t dynamic_points_near_floor = 0;
+  std::uint64_t dynamic_kept_near_floor = 0;
+  // DA over the dynamic points above that layer (1 when none).
+  double dynamic_accuracy_above_floor = 0.0;
 };
 
 // Collects the labelled depth points of a run by voxel (so a long run needs memory per

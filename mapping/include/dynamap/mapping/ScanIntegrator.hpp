@@ -46,6 +46,10 @@ class ScanIntegrator {
   // `rays` are in the map frame (robotio::DepthToRays with T_map_base).
   ScanStatistics Insert(DualOcTree& tree, const robotio::DepthRays& rays,
                         const UpdateRules& rules);
+  // One scan seen from several origins (both Kinects of one instant): every voxel is
+  // updated once, and one hit by any set counts as hit for all.
+  ScanStatistics Insert(DualOcTree& tree, const std::vector<const robotio::DepthRays*>& ray_sets,
+                        const UpdateRules& rules);
 
  private:
   struct Block {
@@ -70,7 +74,8 @@ class ScanIntegrator {
   std::uint32_t box_dims_[3] = {0, 0, 0};
   std::int32_t last_slot_ = -1;
   std::uint64_t last_block_id_ = ~0ull;
-  std::vector<octomap::OcTreeKey> end_keys_;
+  std::vector<octomap::OcTreeKey> end_keys_;  // Of all sets, one after the other.
+  std::vector<bool> end_valid_;
   std::vector<octomap::OcTreeKey> unique_ends_;
   std::vector<octomap::OcTreeKey> hit_keys_;  // Distinct hit voxels of the scan.
   std::vector<std::int32_t> order_;
