@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <opencv2/imgcodecs.hpp>
+
+#include "../robotio/TestPaths.hpp"
 #include "dynamap/app/runtime/MissionEvaluation.hpp"
+#include "dynamap/app/runtime/MissionOutputs.hpp"
 #include "dynamap/robotio/sim/WorldLoader.hpp"
 
 namespace dynamap::app::runtime {
@@ -73,6 +77,49 @@ TEST(ExploredFreeFraction, CountsKnownNavigableCellsOfTheReachableFloor) {
     }
   }
   EXPECT_NEAR(ExploredFreeFraction(truth, west), 0.5, 0.06);
+}
+
+TEST(SurfaceCoverage, CountsSurfacesVisibleFromReachableFloorAndSplitsThemBySeen) {
+  auto world = robotio::sim::ParseWorld(kTwoRooms, "two_rooms.yaml");
+  ASSERT_TRUE(world) << world.error().message;
+  const TruthGrid truth = BuildTruthGrid(*world, Area(0.05), 0.3, 1.0, 0.0);
+  // Map frame = robot start (1, 1): the north walls' room faces lie at map y = 0.95.
+  const robotio::PointList samples = {
+      {0.5f, 0.95f, 0.5f},    // West room, north wall: seen.
+      {3.5f, 0.95f, 0.5f},    // East room, through the doorway: not seen.
+      {0.5f, 0.95f, 1.5f},    // Above the robot: not counted.
+      {0.5f, 0.95f, 0.1f},    // At the floor: not counted.
+      {0.5f, 1.05f, 0.5f}};   // The wall's outer face: no floor there to see it from.
+  const SurfaceCoverageResult coverage = SurfaceCoverage(
+      truth, samples, 1.0, 2.5, [](const Eigen::Vector3f& p) { return p.x() < 2.0f; });
+  ASSERT_EQ(coverage.inspected.size(), 1u);
+  ASSERT_EQ(coverage.missed.size(), 1u);
+  EXPECT_FLOAT_EQ(coverage.inspected[0].x(), 0.5f);
+  EXPECT_FLOAT_EQ(coverage.missed[0].x(), 3.5f);
+  EXPECT_DOUBLE_EQ(coverage.Fraction(), 0.5);
+  EXPECT_DOUBLE_EQ(SurfaceCoverageResult{}.Fraction(), 0.0);
+}
+
+TEST(SurfaceCoverage, PictureShowsSeenSurfacesGreenAndMissedOnesRed) {
+  auto world = robotio::sim::ParseWorld(kTwoRooms, "two_rooms.yaml");
+  ASSERT_TRUE(world) << world.error().message;
+  const TruthGrid truth = BuildTruthGrid(*world, Area(0.05), 0.3, 1.0, 0.0);
+  const SurfaceCoverageResult coverage{{{0.5f, 0.95f, 0.5f}}, {{3.5f, 0.95f, 0.5f}}};
+  const std::string file = test::ScratchDir() + "/coverage.png";
+  ASSERT_TRUE(WriteCoveragePicture(truth.reachable, coverage, file));
+  const cv::Mat image = cv::imread(file, cv::IMREAD_COLOR);
+  ASSERT_FALSE(image.empty());
+  const planning::GridMap& grid = truth.reachable;
+  ASSERT_EQ(image.cols, 2 * grid.width);
+  const auto pixel = [&](float x, float y) {  // The samples' float coordinates.
+    const planning::GridIndex c = grid.CellAt(x, y);
+    return image.at<cv::Vec3b>(2 * (grid.height - 1 - c.y), 2 * c.x);  // BGR.
+  };
+  const cv::Vec3b seen = pixel(0.5f, 0.95f), missed = pixel(3.5f, 0.95f);
+  EXPECT_GT(seen[1], 150);
+  EXPECT_LT(seen[2], 100);
+  EXPECT_GT(missed[2], 150);
+  EXPECT_LT(missed[1], 100);
 }
 
 }  // namespace

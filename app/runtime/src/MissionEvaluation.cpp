@@ -72,13 +72,16 @@ double ExploredFreeFraction(const TruthGrid& truth, const planning::GridMap& kno
   return reachable == 0 ? 0.0 : static_cast<double>(known_free) / static_cast<double>(reachable);
 }
 
-double SurfaceCoverage(const TruthGrid& truth, const robotio::PointList& samples,
-                       double robot_height_m, double inspection_distance_m,
-                       const std::function<bool(const Eigen::Vector3f&)>& inspected) {
+SurfaceCoverageResult SurfaceCoverage(
+    const TruthGrid& truth, const robotio::PointList& samples, double robot_height_m,
+    double inspection_distance_m, const std::function<bool(const Eigen::Vector3f&)>& inspected) {
+  SurfaceCoverageResult result;
   const planning::GridMap& grid = truth.reachable;
   constexpr int kDirections = 24;
-  std::size_t visible = 0;
-  std::size_t seen = 0;
+  // How far the sample's own solid may reach in the direction looked along: the sample
+  // lies on its face, and a cell is solid when the solid comes within half a cell of its
+  // centre, so an outward walk leaves it within 1.5 cells. Walls are 2 cells or thicker.
+  constexpr double kOwnSolidCells = 1.5;
   for (const Eigen::Vector3f& s : samples) {
     if (s.z() < 0.2f || s.z() > robot_height_m) continue;  // Floor, and above the robot.
     bool can_be_seen = false;
@@ -91,6 +94,9 @@ double SurfaceCoverage(const TruthGrid& truth, const robotio::PointList& samples
         const CellState state = grid.At(c);
         if (state == CellState::kObstacle) {
           if (left_solid) break;  // Another solid in between: not from this side.
+          // A surface faces this way only if its solid ends right there: a wall's outer
+          // face, looked at through the wall from the room, is not visible.
+          if (r > kOwnSolidCells * grid.resolution_m) break;
           continue;               // Still inside the sample's own wall or object.
         }
         left_solid = true;
@@ -101,10 +107,9 @@ double SurfaceCoverage(const TruthGrid& truth, const robotio::PointList& samples
       }
     }
     if (!can_be_seen) continue;
-    ++visible;
-    if (inspected(s)) ++seen;
+    (inspected(s) ? result.inspected : result.missed).push_back(s);
   }
-  return visible == 0 ? 0.0 : static_cast<double>(seen) / static_cast<double>(visible);
+  return result;
 }
 
 }  // namespace dynamap::app::runtime

@@ -76,6 +76,57 @@ robotio::Status WriteMapPicture(const planning::GridMap& grid,
   });
 }
 
+robotio::Status WriteCoveragePicture(const planning::GridMap& grid,
+                                     const SurfaceCoverageResult& coverage,
+                                     const std::string& file) {
+  constexpr int kScale = 2;
+  cv::Mat image(grid.height, grid.width, CV_8UC3);
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) {
+      const CellState state = grid.At({x, y});
+      const std::uint8_t v = state == CellState::kNavigable ? 250
+                             : state == CellState::kUnknown ? 215
+                                                            : 175;
+      image.at<cv::Vec3b>(grid.height - 1 - y, x) = {v, v, v};
+    }
+  }
+  // Per cell: samples inspected and visible.
+  std::vector<std::pair<int, int>> counts(grid.cells.size(), {0, 0});
+  const auto add = [&](const robotio::PointList& samples, bool seen) {
+    for (const Eigen::Vector3f& p : samples) {
+      const planning::GridIndex c = grid.CellAt(p.x(), p.y());
+      if (!grid.Contains(c)) continue;
+      auto& [inspected, visible] = counts[static_cast<std::size_t>(grid.Index(c))];
+      inspected += seen ? 1 : 0;
+      ++visible;
+    }
+  };
+  add(coverage.inspected, true);
+  add(coverage.missed, false);
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) {
+      const auto [inspected, visible] = counts[static_cast<std::size_t>(grid.Index({x, y}))];
+      if (visible == 0) continue;
+      const double share = static_cast<double>(inspected) / visible;
+      image.at<cv::Vec3b>(grid.height - 1 - y, x) = {
+          40, static_cast<std::uint8_t>(60 + 140 * share),
+          static_cast<std::uint8_t>(220 - 180 * share)};  // BGR: red → green.
+    }
+  }
+  cv::Mat big;
+  cv::resize(image, big, cv::Size(), kScale, kScale, cv::INTER_NEAREST);
+  const int metre = static_cast<int>(kScale / grid.resolution_m);
+  cv::line(big, {10, big.rows - 12}, {10 + metre, big.rows - 12}, cv::Scalar(0, 0, 0), 3);
+  const std::string caption =
+      "1 m   surfaces seen closely: " + std::to_string(static_cast<int>(100.0 * coverage.Fraction() + 0.5)) +
+      " % (green), missed red";
+  cv::putText(big, caption, {14 + metre, big.rows - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+              cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  return robotio::WriteFileAtomically(file, [&big](const std::string& path) {
+    return cv::imwrite(path, big);
+  });
+}
+
 robotio::Status WriteRosMap(const planning::GridMap& grid, const std::string& pgm,
                             const std::string& yaml) {
   cv::Mat image(grid.height, grid.width, CV_8UC1);

@@ -5,6 +5,7 @@
 #include "Percentile.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -423,6 +424,7 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   if (auto e = mapping::EvaluateTrajectory(truth, m.OdometryEstimates(), ate)) {
     r.odometry_ate_rmse_m = e->ate_m.rmse;
   }
+  std::optional<SurfaceCoverageResult> coverage;  // Only against the simulator's truth.
   if (world_) {
     const mapping::PointAccuracy accuracy = mapping_->Accuracy();
     r.static_accuracy = accuracy.static_accuracy;
@@ -434,10 +436,11 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
     r.explored_free_fraction = ExploredFreeFraction(truth_grid, mapping_->grid());
     const robotio::PointList samples =
         robotio::sim::SampleStaticSurfaces(*world_, config_.mapping.resolution_m);
-    r.surface_coverage = SurfaceCoverage(
+    coverage = SurfaceCoverage(
         truth_grid, samples, config_.planning.projection.robot_height_m,
         config_.planning.coverage.inspection_distance_m,
         [this](const Eigen::Vector3f& p) { return mapping_->Inspected(p); });
+    r.surface_coverage = coverage->Fraction();
   } else {
     r.static_accuracy = r.dynamic_accuracy = r.associated_accuracy = kUnknown;
     r.explored_free_fraction = r.surface_coverage = kUnknown;
@@ -463,6 +466,10 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
       write("map2d.pgm", WriteRosMap(mapping_->grid(), out + "/map2d.pgm", out + "/map2d.yaml")),
   };
   if (r.files.back() == "map2d.pgm") r.files.push_back("map2d.yaml");
+  if (coverage) {
+    results.push_back(write("coverage.png", WriteCoveragePicture(mapping_->grid(), *coverage,
+                                                                 out + "/coverage.png")));
+  }
   if (recording_) r.files.push_back("recording");
   for (const auto& status : results) {
     if (!status) return status.error();

@@ -1,11 +1,13 @@
 // The files a mission leaves behind besides the 3D maps: the projected map as a picture
 // with the path taken and the last targets (map2d.png), as a ROS map_server map
-// (map2d.pgm + map2d.yaml), and report.json.
+// (map2d.pgm + map2d.yaml), where surfaces were seen closely (coverage.png), and
+// report.json.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "dynamap/app/runtime/MissionEvaluation.hpp"
 #include "dynamap/app/runtime/MissionSnapshot.hpp"
 #include "dynamap/planning/GridMap.hpp"
 #include "dynamap/robotio/Expected.hpp"
@@ -19,6 +21,13 @@ namespace dynamap::app::runtime {
                                               const std::vector<robotio::Pose2D>& truth,
                                               const std::vector<Eigen::Vector2d>& targets,
                                               const std::string& file);
+
+// Where the surfaces were seen closely (surface_coverage): the projected map faded, and
+// each cell holding visible surface samples coloured by the share inspected, green all,
+// red none; 2 px per cell, north up.
+[[nodiscard]] robotio::Status WriteCoveragePicture(const planning::GridMap& grid,
+                                                   const SurfaceCoverageResult& coverage,
+                                                   const std::string& file);
 
 // map_server format: PGM (free 254, occupied 0, unknown 205) and its YAML description.
 [[nodiscard]] robotio::Status WriteRosMap(const planning::GridMap& grid, const std::string& pgm,
