@@ -1,5 +1,6 @@
 #include "dynamap/planning/TargetSelection.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dynamap::planning {
@@ -60,6 +61,28 @@ TargetSelection SelectTarget(const std::vector<TargetCandidate>& candidates,
   }
   selection.chosen = *best;
   return selection;
+}
+
+std::optional<TargetCandidate> DroppedTargetKeeper::Keep(
+    const std::optional<TargetCandidate>& previous, const std::optional<TargetCandidate>& next,
+    const std::vector<TargetCandidate>& candidates, const GridMap& map, GridIndex robot,
+    double now_s) {
+  const auto same = [&](GridIndex a, GridIndex b) {
+    return DistanceM(map, a, b) <= config_.same_region_m;
+  };
+  const bool open = previous && DistanceM(map, previous->viewpoint, robot) > config_.arrived_m;
+  const bool still_there =
+      open && std::any_of(candidates.begin(), candidates.end(), [&](const TargetCandidate& c) {
+        return same(c.region_center, previous->region_center);
+      });
+  if (!open || still_there || (next && same(next->region_center, previous->region_center))) {
+    dropped_since_s_.reset();
+    return std::nullopt;
+  }
+  if (!dropped_since_s_) dropped_since_s_ = now_s;
+  if (now_s - *dropped_since_s_ > config_.grace_s) return std::nullopt;
+  if (next && next->score >= config_.better_ratio * previous->score) return std::nullopt;
+  return previous;
 }
 
 }  // namespace dynamap::planning

@@ -99,5 +99,42 @@ TEST(SelectTarget, AReachedCurrentTargetIsNotKept) {
   EXPECT_EQ(s.chosen->kind, TargetKind::kInspection);
 }
 
+TEST(DroppedTargetKeeper, KeepsATargetThatDropsOutForTheGraceTimeThenLetsItGo) {
+  DroppedTargetKeeper keeper;  // 10 s grace.
+  const TargetCandidate wall = Candidate(TargetKind::kInspection, {90, 50}, 1.0);
+  // Dropped out: no candidate near it, the planner would send the robot home.
+  auto kept = keeper.Keep(wall, std::nullopt, {}, kMap, kRobot, 100.0);
+  ASSERT_TRUE(kept);
+  EXPECT_EQ(kept->region_center, wall.region_center);
+  EXPECT_TRUE(keeper.Keep(wall, std::nullopt, {}, kMap, kRobot, 109.0));
+  EXPECT_FALSE(keeper.Keep(wall, std::nullopt, {}, kMap, kRobot, 110.5));  // Given up.
+}
+
+TEST(DroppedTargetKeeper, LetsGoWhenReachedStillThereOrBeaten) {
+  const TargetCandidate wall = Candidate(TargetKind::kInspection, {90, 50}, 1.0);
+  const TargetCandidate other = Candidate(TargetKind::kFrontier, {10, 50}, 1.5);
+  DroppedTargetKeeper keeper;
+  // Reached: the robot stands at its viewpoint.
+  EXPECT_FALSE(keeper.Keep(wall, std::nullopt, {}, kMap, {90, 51}, 0.0));
+  // Still a candidate: selection takes care of it.
+  EXPECT_FALSE(keeper.Keep(wall, other, {wall, other}, kMap, kRobot, 0.0));
+  // Dropped out, another one not twice as good: kept; twice as good: that one.
+  EXPECT_TRUE(keeper.Keep(wall, other, {other}, kMap, kRobot, 0.0));
+  const TargetCandidate much_better = Candidate(TargetKind::kFrontier, {10, 50}, 2.0);
+  EXPECT_FALSE(keeper.Keep(wall, much_better, {much_better}, kMap, kRobot, 1.0));
+  // Nothing was being driven to.
+  EXPECT_FALSE(keeper.Keep(std::nullopt, other, {other}, kMap, kRobot, 2.0));
+}
+
+TEST(DroppedTargetKeeper, TheGraceTimeStartsAgainOnceTheTargetIsBack) {
+  DroppedTargetKeeper keeper;
+  const TargetCandidate wall = Candidate(TargetKind::kInspection, {90, 50}, 1.0);
+  EXPECT_TRUE(keeper.Keep(wall, std::nullopt, {}, kMap, kRobot, 0.0));
+  EXPECT_FALSE(keeper.Keep(wall, wall, {wall}, kMap, kRobot, 8.0));  // Back among them.
+  EXPECT_TRUE(keeper.Keep(wall, std::nullopt, {}, kMap, kRobot, 15.0));  // Out again.
+  EXPECT_TRUE(keeper.Keep(wall, std::nullopt, {}, kMap, kRobot, 24.0));
+  EXPECT_FALSE(keeper.Keep(wall, std::nullopt, {}, kMap, kRobot, 25.5));
+}
+
 }  // namespace
 }  // namespace dynamap::planning

@@ -18,7 +18,13 @@ PlanningWorker::PlanningWorker(Mediator& mediator, PlanningWorkerConfig config)
       config_(std::move(config)),
       targets_(config_.planning.targets, config_.resolution_m),
       coverage_(config_.planning.coverage),
-      obstacles_(config_.planning.temporary_obstacle_s) {}
+      obstacles_(config_.planning.temporary_obstacle_s),
+      dropped_([this] {
+        planning::DroppedTargetConfig dropped;
+        dropped.arrived_m = 2.0 * config_.planning.follower.goal_tolerance_m + config_.resolution_m;
+        dropped.same_region_m = config_.planning.targets.blacklist.radius_m;
+        return dropped;
+      }()) {}
 
 planning::GridMap PlanningWorker::PrepareGrid(const planning::GridMap& seen,
                                               const robotio::Pose2D& pose) const {
@@ -96,11 +102,11 @@ void PlanningWorker::PlanOnce(double now_s) {
     mediator_.plan.Set(plan);
     return;
   }
-  if (decision.kind == planning::TargetKind::kReturnToStart) {
-    mediator_.counters.exploration_done = true;
-  }
   // Keep the current target unless another is clearly better; never one at the robot's
   // feet (counted as failed, so an unresolvable one ends up blacklisted).
+  const std::optional<planning::TargetCandidate> previous = current_target_;
+  // Yamauchi's nearest frontier stays the plain baseline it is compared with.
+  const bool keep_dropped = config_.planning.targets.strategy != "nearest-frontier";
   planning::GridIndex goal_cell = decision.cell;
   if (decision.kind != planning::TargetKind::kReturnToStart) {
     planning::TargetSelectionConfig selection_config;
@@ -117,10 +123,24 @@ void PlanningWorker::PlanOnce(double now_s) {
       return;
     }
     current_target_ = selection.chosen;
-    goal_cell = selection.chosen->viewpoint;
-    plan.kind = selection.chosen->kind;
+    if (auto kept = keep_dropped ? dropped_.Keep(previous, current_target_, decision.candidates,
+                                                 grid, robot, now_s)
+                                 : std::nullopt) {
+      current_target_ = kept;
+    }
+    goal_cell = current_target_->viewpoint;
+    plan.kind = current_target_->kind;
   } else {
     current_target_.reset();
+    if (keep_dropped) {
+      current_target_ = dropped_.Keep(previous, std::nullopt, decision.candidates, grid, robot, now_s);
+    }
+    if (current_target_) {
+      goal_cell = current_target_->viewpoint;
+      plan.kind = current_target_->kind;
+    } else {
+      mediator_.counters.exploration_done = true;
+    }
   }
   if (!search_) {
     search_ = std::make_unique<planning::PathPlanner>(config_.planning.planner, traversal);

@@ -13,6 +13,7 @@
 #include "dynamap/planning/PlanningConfig.hpp"
 #include "dynamap/planning/SurfaceCoverage.hpp"
 #include "dynamap/planning/TargetPlanner.hpp"
+#include "dynamap/planning/TargetSelection.hpp"
 #include "dynamap/planning/TemporaryObstacles.hpp"
 
 namespace dynamap::app::runtime {
@@ -58,6 +59,7 @@ class PlanningWorker {
   planning::GridIndex goal_{-1, -1};
   planning::TargetCandidate goal_target_;  // What the goal was chosen for (blacklisting).
   std::optional<planning::TargetCandidate> current_target_;  // Kept across re-plans.
+  planning::DroppedTargetKeeper dropped_;  // A target that drops out, still driven to.
   double goal_since_s_ = 0.0;
   std::optional<double> arrived_s_;  // When the robot reached the current viewpoint.
   std::vector<double> plan_ms_;
