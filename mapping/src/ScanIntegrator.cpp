@@ -119,28 +119,27 @@ ScanStatistics ScanIntegrator::Insert(DualOcTree& tree,
   ScanStatistics stats;
   // Origins and end voxels of every set, and the box that holds every ray (a ray's voxels
   // lie between its ends). A set whose origin lies outside the tree is left out.
-  std::vector<octomap::OcTreeKey> origin_keys(ray_sets.size());
   std::vector<bool> usable(ray_sets.size(), false);
-  std::vector<std::size_t> first_end(ray_sets.size() + 1, 0);
+  std::vector<std::size_t> first_end(ray_sets.size(), 0);  // Of each set in end_keys_.
   std::size_t total = 0;
   bool any = false;
   octomap::OcTreeKey min_key, max_key;
   for (std::size_t s = 0; s < ray_sets.size(); ++s) {
     const robotio::DepthRays& rays = *ray_sets[s];
+    stats.rays += rays.ends.size();
     first_end[s] = total;
     const Eigen::Vector3f& o = rays.origin;
-    if (!tree.coordToKeyChecked(octomap::point3d(o.x(), o.y(), o.z()), origin_keys[s])) continue;
+    octomap::OcTreeKey origin_key;
+    if (!tree.coordToKeyChecked(octomap::point3d(o.x(), o.y(), o.z()), origin_key)) continue;
     usable[s] = true;
-    stats.rays += rays.ends.size();
     total += rays.ends.size();
-    if (!any) min_key = max_key = origin_keys[s];
+    if (!any) min_key = max_key = origin_key;
     any = true;
     for (int a = 0; a < 3; ++a) {
-      min_key[a] = std::min(min_key[a], origin_keys[s][a]);
-      max_key[a] = std::max(max_key[a], origin_keys[s][a]);
+      min_key[a] = std::min(min_key[a], origin_key[a]);
+      max_key[a] = std::max(max_key[a], origin_key[a]);
     }
   }
-  first_end[ray_sets.size()] = total;
   if (!any) return stats;
   end_keys_.resize(total);
   end_valid_.assign(total, false);

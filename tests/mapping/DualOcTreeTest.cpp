@@ -322,44 +322,33 @@ TEST(DualOcTreeTest, NeverObservedVoxelsAreUnknown) {
 }
 
 // The batched update equals the plain reference on a scene with a person moving through
-// it, in both modes, scan after scan (structure, pruning and every value).
+// it, in both modes, scan after scan (structure, pruning and every value), from one
+// origin and from two per scan (the two Kinects of the rig).
 TEST(DualOcTreeTest, BatchedUpdateEqualsTheReferenceImplementation) {
   for (UpdateMode mode : {UpdateMode::kDynamic, UpdateMode::kRegular}) {
-    MappingConfig config;
-    config.update = mode;
-    config.resolution_m = 0.1;
-    DualMap fast{config};
-    DualOcTree reference(config.resolution_m);
-    testing::SyntheticScene scene;
-    for (int scan = 0; scan < 12; ++scan) {
-      scene.boxes = {{{1.5f, -1.0f + 0.15f * scan, -0.5f}, {1.8f, -0.6f + 0.15f * scan, 1.2f}}};
-      const Eigen::Vector3f origin(0.05f * scan, 0.01f * scan, 0.3f);
-      const robotio::DepthRays rays = testing::CastScan(scene, origin, 4.0f, 1.0f);
-      fast.InsertRays(rays);
-      testing::ReferenceInsert(reference, rays, fast.rules());
-      ASSERT_EQ(fast.tree().size(), reference.size()) << "scan " << scan;
-      ASSERT_EQ(Serialise(fast.tree()), Serialise(reference)) << "scan " << scan;
+    for (const int origins : {1, 2}) {
+      MappingConfig config;
+      config.update = mode;
+      config.resolution_m = 0.1;
+      DualMap fast{config};
+      DualOcTree reference(config.resolution_m);
+      testing::SyntheticScene scene;
+      for (int scan = 0; scan < 12; ++scan) {
+        scene.boxes = {{{1.5f, -1.0f + 0.15f * scan, -0.5f}, {1.8f, -0.6f + 0.15f * scan, 1.2f}}};
+        const Eigen::Vector3f origin(0.05f * scan, 0.01f * scan, 0.3f);
+        std::vector<robotio::DepthRays> rays = {testing::CastScan(scene, origin, 4.0f, 1.0f)};
+        if (origins == 2) {
+          rays.push_back(
+              testing::CastScan(scene, origin + Eigen::Vector3f(0.1f, 0.05f, 0.5f), 4.0f, 1.0f));
+          fast.InsertScan(rays);
+        } else {
+          fast.InsertRays(rays.front());
+        }
+        testing::ReferenceInsert(reference, rays, fast.rules());
+        ASSERT_EQ(fast.tree().size(), reference.size()) << origins << " origins, scan " << scan;
+        ASSERT_EQ(Serialise(fast.tree()), Serialise(reference)) << origins << " origins, scan " << scan;
+      }
     }
-  }
-}
-
-// The same with two origins per scan (the two Kinects of the rig).
-TEST(DualOcTreeTest, BatchedUpdateOfTwoOriginsEqualsTheReferenceImplementation) {
-  MappingConfig config;
-  config.resolution_m = 0.1;
-  DualMap fast{config};
-  DualOcTree reference(config.resolution_m);
-  testing::SyntheticScene scene;
-  for (int scan = 0; scan < 12; ++scan) {
-    scene.boxes = {{{1.5f, -1.0f + 0.15f * scan, -0.5f}, {1.8f, -0.6f + 0.15f * scan, 1.2f}}};
-    const Eigen::Vector3f origin(0.05f * scan, 0.01f * scan, 0.3f);
-    const std::vector<robotio::DepthRays> rays = {
-        testing::CastScan(scene, origin, 4.0f, 1.0f),
-        testing::CastScan(scene, origin + Eigen::Vector3f(0.1f, 0.05f, 0.5f), 4.0f, 1.0f)};
-    fast.InsertScan(rays);
-    testing::ReferenceInsert(reference, rays, fast.rules());
-    ASSERT_EQ(fast.tree().size(), reference.size()) << "scan " << scan;
-    ASSERT_EQ(Serialise(fast.tree()), Serialise(reference)) << "scan " << scan;
   }
 }
 

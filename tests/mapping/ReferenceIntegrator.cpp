@@ -20,10 +20,6 @@ void FinishRecurs(DualOcTree& tree, DualOcTreeNode* node, unsigned depth) {
 
 }  // namespace
 
-void ReferenceInsert(DualOcTree& tree, const robotio::DepthRays& rays, const UpdateRules& rules) {
-  ReferenceInsert(tree, std::vector<robotio::DepthRays>{rays}, rules);
-}
-
 void ReferenceInsert(DualOcTree& tree, const std::vector<robotio::DepthRays>& ray_sets,
                      const UpdateRules& rules) {
   octomap::KeySet free_keys, hit_keys;

@@ -11,8 +11,7 @@
 
 namespace dynamap::mapping::testing {
 
-void ReferenceInsert(DualOcTree& tree, const robotio::DepthRays& rays, const UpdateRules& rules);
-// One scan from several origins: every voxel updated once, a hit from any set wins.
+// One scan from one or several origins: every voxel updated once, a hit from any set wins.
 void ReferenceInsert(DualOcTree& tree, const std::vector<robotio::DepthRays>& ray_sets,
                      const UpdateRules& rules);
 
