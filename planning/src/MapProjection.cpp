@@ -88,6 +88,15 @@ void MapProjector::Refresh(const std::vector<Eigen::Vector2f>& hit_xy, double no
   }
 }
 
+std::vector<int> MapProjector::DynamicObstacleCells() const {
+  std::vector<int> cells;
+  for (const int i : dynamic_cells_) {
+    // A released cell shows what lies under the trace, never an obstacle of its own.
+    if (map_.cells[i] == CellState::kObstacle) cells.push_back(i);
+  }
+  return cells;
+}
+
 std::vector<int> MapProjector::ExpireDynamicObstacles(const VoxelMapView& view, double now_s) {
   if (config_.dynamic_obstacle_ttl_s <= 0.0) return {};
   std::vector<int> expired;

@@ -152,12 +152,17 @@ TEST(MapProjection, DynamicOnlyObstaclesExpireButStaticOnesStay) {
   const GridIndex cabinet = projector.map().CellAt(1.225, 1.225);
   (void)projector.Update(world, touched, 100.0);
   EXPECT_EQ(projector.map().At(person), CellState::kObstacle);
+  // The planner is told which obstacles are the dynamic map's alone: the person, not the
+  // cabinet.
+  EXPECT_EQ(projector.DynamicObstacleCells(),
+            std::vector<int>{projector.map().Index(person)});
   EXPECT_TRUE(projector.ExpireDynamicObstacles(world, 105.0).empty());
   (void)projector.Update(world, touched, 108.0);  // Passed over, not hit: no news.
   EXPECT_EQ(projector.map().At(person), CellState::kObstacle);
   const std::vector<int> released = projector.ExpireDynamicObstacles(world, 110.5);
   ASSERT_EQ(released.size(), 1u);
   EXPECT_EQ(projector.map().At(person), CellState::kNavigable);
+  EXPECT_TRUE(projector.DynamicObstacleCells().empty());
   EXPECT_TRUE(projector.ExpireDynamicObstacles(world, 112.0).empty());  // Released once.
   EXPECT_EQ(projector.map().At(cabinet), CellState::kObstacle);
   // Once the trace is seen free and the person steps in again, it blocks afresh.

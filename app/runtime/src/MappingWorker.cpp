@@ -147,7 +147,8 @@ void MappingWorker::Reproject() {
   if (mediator_.map_copy_wanted.exchange(false)) {
     mediator_.map_copy.Set(std::shared_ptr<const mapping::DualOcTree>(map().tree().Clone()));
   }
-  mediator_.grid.Set(std::make_shared<const planning::GridMap>(projector_.map()));
+  mediator_.grid.Set(std::make_shared<const ProjectedGrid>(
+      ProjectedGrid{projector_.map(), projector_.DynamicObstacleCells()}));
 }
 
 void MappingWorker::Run() {

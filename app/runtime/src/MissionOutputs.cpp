@@ -176,6 +176,8 @@ robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra
       {"guard_stops", r.guard_stops},
       {"map_guard_stops", r.map_guard_stops},
       {"plans", r.plans},
+      {"unreachable_targets", r.unreachable_targets},
+      {"blocked_plans", r.blocked_plans},
       {"planner_median_ms", r.plan_median_ms},
       {"planner_p95_ms", r.plan_p95_ms},
       {"map_insert_median_ms", r.insert_median_ms},

@@ -361,7 +361,9 @@ MissionSnapshot MissionRuntime::Snapshot() const {
   s.sim_time_s = robotio::NanosToSeconds(m.clock.now_ns());
   s.pose = m.CurrentPose();
   s.trail = m.Trail();
-  if (auto grid = m.grid.Get()) s.grid = grid->value;
+  if (auto grid = m.grid.Get()) {
+    s.grid = std::shared_ptr<const planning::GridMap>(grid->value, &grid->value->map);
+  }
   if (auto plan = m.plan.Get()) {
     s.target_kind = plan->value.kind;
     s.has_goal = plan->value.has_goal;
@@ -404,6 +406,8 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   r.guard_stops = m.counters.guard_stops.load();
   r.map_guard_stops = m.counters.map_guard_stops.load();
   r.plans = m.counters.plans.load();
+  r.unreachable_targets = m.counters.unreachable_targets.load();
+  r.blocked_plans = m.counters.blocked_plans.load();
   r.plan_median_ms = Percentile(planning_->plan_ms(), 0.5);
   r.plan_p95_ms = Percentile(planning_->plan_ms(), 0.95);
   r.insert_median_ms = mapping_->median_insert_ms();

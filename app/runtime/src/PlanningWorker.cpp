@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "dynamap/planning/BlockedWay.hpp"
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/FloorGaps.hpp"
 #include "dynamap/planning/PathShortening.hpp"
@@ -19,6 +20,7 @@ PlanningWorker::PlanningWorker(Mediator& mediator, PlanningWorkerConfig config)
       targets_(config_.planning.targets, config_.resolution_m),
       coverage_(config_.planning.coverage),
       obstacles_(config_.planning.temporary_obstacle_s),
+      blocked_(planning::BlockedWayConfig{config_.blocked_wait_s, 1.0}),
       dropped_([this] {
         planning::DroppedTargetConfig dropped;
         dropped.arrived_m = 2.0 * config_.planning.follower.goal_tolerance_m + config_.resolution_m;
@@ -67,12 +69,12 @@ void PlanningWorker::PlanOnce(double now_s) {
   if (!projected || !projected->value) return;
   const auto start = std::chrono::steady_clock::now();
   const robotio::Pose2D pose = mediator_.CurrentPose();
-  if (FacingCurrentTarget(*projected->value, pose, now_s)) return;
+  if (FacingCurrentTarget(projected->value->map, pose, now_s)) return;
   // The floor assumed around visited places (too close for the Kinects to see) counts as
   // known, so frontiers lie beyond it and never at the robot's own feet.
   obstacles_.Add(mediator_.TakeObstacles(), robotio::Pose2D{}, now_s);
   obstacles_.Expire(now_s);
-  const planning::GridMap seen = obstacles_.Apply(*projected->value, now_s);
+  const planning::GridMap seen = obstacles_.Apply(projected->value->map, now_s);
   const planning::GridMap grid = PrepareGrid(seen, pose);
   planning::TraversalGrid traversal = BuildTraversalGrid(grid, config_.planning.cost);
   const planning::GridIndex robot = grid.CellAt(pose.x, pose.y);
@@ -80,10 +82,15 @@ void PlanningWorker::PlanOnce(double now_s) {
   if (!grid.Contains(robot)) return;
   // The robot stands where it stands: its own cell never blocks its way out.
   if (traversal.Blocked(robot)) traversal.penalty[traversal.Index(robot)] = 10.0;
-  coverage_.Observe(grid, pose);
+  // People are neither surfaces to inspect nor walls hiding what lies behind them: a
+  // person's trace made inspection targets of its own (only the paths go round them).
+  const std::vector<int>& dynamic_obstacles = projected->value->dynamic_obstacles;
+  const planning::GridMap without_people =
+      dynamic_obstacles.empty() ? grid : planning::WithoutDynamicObstacles(grid, dynamic_obstacles);
+  coverage_.Observe(without_people, pose);
 
   const planning::TargetDecision decision =
-      targets_.Plan(grid, traversal, robot, home, &coverage_, now_s);
+      targets_.Plan(without_people, traversal, robot, home, &coverage_, now_s);
   spdlog::debug("t {:.1f} s: {} regions, {} unreachable, {} blacklisted, {} candidates -> {} ({}, {})",
                 now_s, decision.frontier_regions, decision.unreachable_regions,
                 decision.blacklisted_regions,
@@ -123,6 +130,7 @@ void PlanningWorker::PlanOnce(double now_s) {
       return;
     }
     current_target_ = selection.chosen;
+    mediator_.counters.exploration_done = false;  // Something worth reaching again.
     if (auto kept = keep_dropped ? dropped_.Keep(previous, current_target_, decision.candidates,
                                                  grid, robot, now_s)
                                  : std::nullopt) {
@@ -156,6 +164,29 @@ void PlanningWorker::PlanOnce(double now_s) {
   }
   const planning::GridPath path = search_->Plan();
   if (!path.found) {
+    // Blocked only by people (or a door that has just closed): wait for a while, facing
+    // the way, so that the Kinects see it clear; the target stays.
+    std::optional<planning::TraversalGrid> passable;
+    if (!dynamic_obstacles.empty()) {
+      passable = BuildTraversalGrid(without_people, config_.planning.cost);
+      if (passable->Blocked(robot)) passable->penalty[passable->Index(robot)] = 10.0;
+    }
+    const planning::BlockedWayVerdict blocked = blocked_.Judge(
+        passable ? &*passable : nullptr, robot, goal_, grid.resolution_m, now_s);
+    if (blocked.wait) {
+      spdlog::debug("t {:.1f} s: way to ({}, {}) blocked by moving obstacles for {:.1f} s",
+                    now_s, goal_.x, goal_.y, blocked.blocked_for_s);
+      ++mediator_.counters.blocked_plans;
+      plan.has_goal = true;
+      plan.goal_map = {pose.x, pose.y};
+      plan.path_map = {plan.goal_map};
+      plan.look_at_map = Eigen::Vector2d(grid.CenterX(blocked.look_at.x),
+                                         grid.CenterY(blocked.look_at.y));
+      plan.map = std::make_shared<const planning::GridMap>(grid);
+      plan.traversal = std::make_shared<const planning::TraversalGrid>(std::move(traversal));
+      mediator_.plan.Set(std::move(plan));
+      return;
+    }
     spdlog::debug("t {:.1f} s: no path from ({}, {}) to ({}, {})", now_s, robot.x, robot.y,
                   goal_.x, goal_.y);
     targets_.ReportUnreachable(goal_target_, now_s);
@@ -170,6 +201,7 @@ void PlanningWorker::PlanOnce(double now_s) {
                 goal_.y, path.found ? "reachable" : "unreachable", robot.x, robot.y,
                 path.cells.size());
   if (path.found) {
+    blocked_.Clear();
     plan.has_goal = true;
     if (current_target_) {
       const planning::GridIndex look = current_target_->region_center;

@@ -34,6 +34,14 @@ struct PoseFix {
   robotio::Pose2D T_odom_base;
 };
 
+// The mapping worker's newest projection of the dual map.
+struct ProjectedGrid {
+  planning::GridMap map;
+  // Cells that are obstacles only because of the dynamic map (people walking, a door just
+  // closed): the planner lets them move on instead of giving up targets behind them.
+  std::vector<int> dynamic_obstacles;
+};
+
 // What the planner decided last.
 struct Plan {
   std::int64_t stamp_ns = 0;
@@ -61,6 +69,7 @@ struct MissionCounters {
   std::atomic<std::int64_t> map_guard_stops{0};  // Control steps the map guard held back.
   std::atomic<std::int64_t> plans{0};
   std::atomic<std::int64_t> unreachable_targets{0};
+  std::atomic<std::int64_t> blocked_plans{0};  // Plans that waited for people to move on.
   // Simulated time up to which each worker has finished its work (lockstep pacing).
   std::atomic<std::int64_t> slam_done_ns{-1};
   std::atomic<std::int64_t> planning_done_ns{-1};
@@ -81,7 +90,7 @@ class Mediator {
   OdometryHistory odometry;
   std::array<LatestValue<robotio::DepthFrame>, kMaxKinects> latest_depth;
   LatestValue<PoseFix> pose_fix;
-  LatestValue<std::shared_ptr<const planning::GridMap>> grid;
+  LatestValue<std::shared_ptr<const ProjectedGrid>> grid;
   LatestValue<Plan> plan;
   LatestValue<robotio::VelocityCommand> command;
   // A copy of the dual map for a front end's 3D view, made by the mapping worker after its

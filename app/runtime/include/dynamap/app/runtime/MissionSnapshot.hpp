@@ -66,6 +66,8 @@ struct MissionReport {
   std::int64_t guard_stops = 0;
   std::int64_t map_guard_stops = 0;  // Control steps the map guard held the base.
   std::int64_t plans = 0;
+  std::int64_t unreachable_targets = 0;  // Goals given up: no path, even without people.
+  std::int64_t blocked_plans = 0;        // Plans that stood waiting for people to move on.
   double plan_median_ms = 0.0;
   double plan_p95_ms = 0.0;
   double insert_median_ms = 0.0;

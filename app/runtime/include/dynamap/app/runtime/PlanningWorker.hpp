@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dynamap/app/runtime/Mediator.hpp"
+#include "dynamap/planning/BlockedWay.hpp"
 #include "dynamap/planning/PathPlanner.hpp"
 #include "dynamap/planning/PlanningConfig.hpp"
 #include "dynamap/planning/SurfaceCoverage.hpp"
@@ -26,6 +27,8 @@ struct PlanningWorkerConfig {
   // in place; without this the start would be an island among unknown cells.
   double start_floor_radius_m = 1.3;
   double target_timeout_s = 60.0;     // s without reaching a goal before it counts as failed.
+  double blocked_wait_s = 10.0;       // s the robot waits for people blocking its way
+                                      // before the target counts as unreachable.
   double face_timeout_s = 6.0;        // s at a viewpoint, turning to face its target,
                                       // before the target is judged again.
   double resolution_m = 0.05;         // m, cell edge of the projected map.
@@ -55,6 +58,7 @@ class PlanningWorker {
   planning::TargetPlanner targets_;
   planning::SurfaceCoverage coverage_;
   planning::TemporaryObstacles obstacles_;
+  planning::BlockedWay blocked_;  // Waits for people in the way before giving a goal up.
   std::unique_ptr<planning::PathPlanner> search_;  // D* Lite (or A*), kept across plans.
   planning::GridIndex goal_{-1, -1};
   planning::TargetCandidate goal_target_;  // What the goal was chosen for (blacklisting).
