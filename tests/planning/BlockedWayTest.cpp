@@ -17,7 +17,7 @@ constexpr double kRes = 0.05;
 GridMap TwoRooms() {
   GridMap grid(120, 60, kRes, CellState::kNavigable);
   for (int y = 0; y < 60; ++y) {
-    if (y < 20 || y >= 40) grid.cells[static_cast<std::size_t>(grid.Index({60, y}))] = CellState::kObstacle;
+    if (y < 20 || y >= 40) grid.Set({60, y}, CellState::kObstacle);
   }
   return grid;
 }
@@ -28,11 +28,18 @@ std::vector<int> PersonInTheDoorway(GridMap& grid) {
   for (int y = 26; y < 34; ++y) {
     for (int x = 57; x < 65; ++x) {
       const int i = grid.Index({x, y});
-      grid.cells[static_cast<std::size_t>(i)] = CellState::kObstacle;
+      grid.Set({x, y}, CellState::kObstacle);
       cells.push_back(i);
     }
   }
   return cells;
+}
+
+// What the planner judges the way on: the two rooms as if the person were not there.
+TraversalGrid WithoutThePerson() {
+  GridMap grid = TwoRooms();
+  const std::vector<int> person = PersonInTheDoorway(grid);
+  return BuildTraversalGrid(WithoutDynamicObstacles(grid, person), {});
 }
 
 const GridIndex kRobot{20, 30};
@@ -40,10 +47,9 @@ const GridIndex kGoal{100, 30};
 
 TEST(BlockedWay, WaitsForAPersonInTheDoorLookingThatWayThenGivesUp) {
   GridMap grid = TwoRooms();
-  const std::vector<int> person = PersonInTheDoorway(grid);
-  const TraversalGrid all = BuildTraversalGrid(grid, {});
-  ASSERT_FALSE(AStarSearch(all, kRobot, kGoal).found);
-  const TraversalGrid passable = BuildTraversalGrid(WithoutDynamicObstacles(grid, person), {});
+  (void)PersonInTheDoorway(grid);
+  ASSERT_FALSE(AStarSearch(BuildTraversalGrid(grid, {}), kRobot, kGoal).found);
+  const TraversalGrid passable = WithoutThePerson();
 
   BlockedWay way(BlockedWayConfig{10.0, 1.0});
   const BlockedWayVerdict first = way.Judge(&passable, kRobot, kGoal, kRes, 100.0);
@@ -61,7 +67,7 @@ TEST(BlockedWay, AWallIsNotWaitedFor) {
   GridMap grid = TwoRooms();
   const std::vector<int> person = PersonInTheDoorway(grid);
   // The door itself is shut (static): the way stays blocked without the person too.
-  for (int y = 20; y < 40; ++y) grid.cells[static_cast<std::size_t>(grid.Index({66, y}))] = CellState::kObstacle;
+  for (int y = 20; y < 40; ++y) grid.Set({66, y}, CellState::kObstacle);
   const TraversalGrid passable = BuildTraversalGrid(WithoutDynamicObstacles(grid, person), {});
   BlockedWay way;
   EXPECT_FALSE(way.Judge(&passable, kRobot, kGoal, kRes, 100.0).wait);
@@ -69,9 +75,7 @@ TEST(BlockedWay, AWallIsNotWaitedFor) {
 }
 
 TEST(BlockedWay, AFoundPathStartsTheNextWaitAfresh) {
-  GridMap grid = TwoRooms();
-  const std::vector<int> person = PersonInTheDoorway(grid);
-  const TraversalGrid passable = BuildTraversalGrid(WithoutDynamicObstacles(grid, person), {});
+  const TraversalGrid passable = WithoutThePerson();
   BlockedWay way(BlockedWayConfig{10.0, 1.0});
   ASSERT_TRUE(way.Judge(&passable, kRobot, kGoal, kRes, 100.0).wait);
   way.Clear();
@@ -85,7 +89,7 @@ TEST(BlockedWay, OnlyObstaclesOfTheDynamicMapAreCleared) {
   GridMap grid = TwoRooms();
   const std::vector<int> person = PersonInTheDoorway(grid);
   std::vector<int> listed = person;
-  grid.cells[static_cast<std::size_t>(grid.Index({10, 10}))] = CellState::kUnknown;
+  grid.Set({10, 10}, CellState::kUnknown);
   listed.push_back(grid.Index({10, 10}));  // Unknown stays unknown.
   const GridMap cleared = WithoutDynamicObstacles(grid, listed);
   for (const int i : person) EXPECT_EQ(cleared.cells[static_cast<std::size_t>(i)], CellState::kNavigable);
