@@ -177,22 +177,19 @@ void PlanningWorker::PlanOnce(double now_s) {
       spdlog::debug("t {:.1f} s: way to ({}, {}) blocked by moving obstacles for {:.1f} s",
                     now_s, goal_.x, goal_.y, blocked.blocked_for_s);
       ++mediator_.counters.blocked_plans;
-      plan.has_goal = true;
+      plan.has_goal = true;  // Stand where it stands and face the way.
       plan.goal_map = {pose.x, pose.y};
       plan.path_map = {plan.goal_map};
       plan.look_at_map = Eigen::Vector2d(grid.CenterX(blocked.look_at.x),
                                          grid.CenterY(blocked.look_at.y));
-      plan.map = std::make_shared<const planning::GridMap>(grid);
-      plan.traversal = std::make_shared<const planning::TraversalGrid>(std::move(traversal));
-      mediator_.plan.Set(std::move(plan));
-      return;
+    } else {
+      spdlog::debug("t {:.1f} s: no path from ({}, {}) to ({}, {})", now_s, robot.x, robot.y,
+                    goal_.x, goal_.y);
+      targets_.ReportUnreachable(goal_target_, now_s);
+      ++mediator_.counters.unreachable_targets;
+      goal_ = {-1, -1};
+      current_target_.reset();
     }
-    spdlog::debug("t {:.1f} s: no path from ({}, {}) to ({}, {})", now_s, robot.x, robot.y,
-                  goal_.x, goal_.y);
-    targets_.ReportUnreachable(goal_target_, now_s);
-    ++mediator_.counters.unreachable_targets;
-    goal_ = {-1, -1};
-    current_target_.reset();
   } else if (now_s - goal_since_s_ > config_.target_timeout_s) {
     targets_.ReportFailure(goal_target_, now_s);
     goal_since_s_ = now_s;
