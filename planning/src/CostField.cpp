@@ -1,5 +1,6 @@
 #include "dynamap/planning/CostField.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <functional>
 #include <opencv2/imgproc.hpp>
@@ -30,22 +31,30 @@ TraversalGrid BuildTraversalGrid(const GridMap& map, const CostFieldConfig& conf
   if (map.width == 0 || map.height == 0) return grid;
   const cv::Mat to_obstacle = DistanceTo(
       map, [](CellState s) { return s == CellState::kObstacle || s == CellState::kHole; });
+  cv::Mat to_hole;
+  if (config.hole_margin_m > 0.0 &&
+      std::find(map.cells.begin(), map.cells.end(), CellState::kHole) != map.cells.end()) {
+    to_hole = DistanceTo(map, [](CellState s) { return s == CellState::kHole; });
+  }
   cv::Mat to_unknown;
   if (config.unknown_is_obstacle) {
     to_unknown = DistanceTo(map, [](CellState s) { return s == CellState::kUnknown; });
   }
   const double radius_cells = config.robot_radius_m / map.resolution_m;
   const double unknown_cells = config.unknown_radius_m / map.resolution_m;
+  const double hole_cells = (config.robot_radius_m + config.hole_margin_m) / map.resolution_m;
   const double range_cells = config.proximity_range_m / map.resolution_m;
   for (int y = 0; y < map.height; ++y) {
     const auto* row = to_obstacle.ptr<float>(y);
     const float* unknown_row = to_unknown.empty() ? nullptr : to_unknown.ptr<float>(y);
+    const float* hole_row = to_hole.empty() ? nullptr : to_hole.ptr<float>(y);
     for (int x = 0; x < map.width; ++x) {
       const double d = row[x];
       double& p = grid.penalty[static_cast<std::size_t>(y) * map.width + x];
       const bool near_unknown =
           unknown_row != nullptr && (unknown_row[x] == 0.0f || unknown_row[x] < unknown_cells);
-      if (d == 0.0 || d < radius_cells || near_unknown) {
+      const bool near_hole = hole_row != nullptr && hole_row[x] < hole_cells;
+      if (d == 0.0 || d < radius_cells || near_unknown || near_hole) {
         p = kInfinity;
       } else if (range_cells > 0.0 && d < radius_cells + range_cells) {
         p = config.proximity_weight * (1.0 - (d - radius_cells) / range_cells);

@@ -21,6 +21,7 @@ void ReadCost(robotio::ConfigNode& n, CostFieldConfig* c) {
   n.Read("proximity_weight", &c->proximity_weight, 0.0, 100.0);
   n.Read("unknown_is_obstacle", &c->unknown_is_obstacle);
   n.Read("unknown_radius_m", &c->unknown_radius_m, 0.0, 2.0);
+  n.Read("hole_margin_m", &c->hole_margin_m, 0.0, 2.0);
 }
 
 void ReadTargets(robotio::ConfigNode& n, TargetPlannerConfig* c) {

@@ -47,5 +47,29 @@ TEST(BuildTraversalGrid, ObstaclesInflateByTheRobotRadiusWithAPenaltyBeyond) {
   EXPECT_EQ(grid.penalty[grid.Index({20, 10})], 0.0);  // 1.5 m away.
 }
 
+TEST(BuildTraversalGrid, AStairPitIsKeptFurtherAwayThanAWall) {
+  // A wall along y = 0..1, and 0.8 m from it a block (x < 30) or a pit (x >= 30): the
+  // robot fits between wall and block, not between wall and pit.
+  GridMap map(60, 60, kRes, CellState::kNavigable);
+  for (int x = 0; x < 60; ++x) {
+    map.Set({x, 0}, CellState::kObstacle);
+    map.Set({x, 1}, CellState::kObstacle);
+    for (int y = 17; y < 60; ++y) map.Set({x, y}, x < 30 ? CellState::kObstacle : CellState::kHole);
+  }
+  const auto passable_across = [](const TraversalGrid& grid, int x) {
+    for (int y = 2; y < 17; ++y) {
+      if (!grid.Blocked({x, y})) return true;
+    }
+    return false;
+  };
+  CostFieldConfig config;
+  const TraversalGrid grid = BuildTraversalGrid(map, config);
+  EXPECT_TRUE(passable_across(grid, 10));
+  EXPECT_FALSE(passable_across(grid, 50));
+  EXPECT_TRUE(grid.Blocked({50, 8}));  // 0.45 m from the pit: too near.
+  config.hole_margin_m = 0.0;
+  EXPECT_TRUE(passable_across(BuildTraversalGrid(map, config), 50));
+}
+
 }  // namespace
 }  // namespace dynamap::planning

@@ -17,6 +17,10 @@ struct CostFieldConfig {
                                     // lie up to half a cell beyond the surface; a larger
                                     // radius (0.38 m) closed the 0.9 m office doors, and the
                                     // map guard covers the difference.
+  double hole_margin_m = 0.15;      // m kept from a hole (a stair pit) beyond the radius: a
+                                    // wall is bumped, a pit is fallen into. Without it the
+                                    // office robot drove through the 1 m between the pit and
+                                    // a wall, and twice its footprint touched the pit's corner.
   double proximity_range_m = 0.5;   // m beyond the radius over which the penalty decays to 0.
   double proximity_weight = 2.0;    // Penalty at the inflated boundary (relative extra cost).
   bool unknown_is_obstacle = true;  // Unknown cells block (inflated by unknown_radius_m);
