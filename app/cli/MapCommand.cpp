@@ -320,6 +320,9 @@ void RunMap(const MapOptions& o) {
     report["dynamic_points_near_floor"] = a.dynamic_points_near_floor;
     report["dynamic_kept_near_floor"] = a.dynamic_kept_near_floor;
     report["dynamic_accuracy_above_floor"] = a.dynamic_accuracy_above_floor;
+    report["static_points_near_floor"] = a.static_points_near_floor;
+    report["static_kept_near_floor"] = a.static_kept_near_floor;
+    report["static_accuracy_above_floor"] = a.static_accuracy_above_floor;
     report["evaluation_pixel_stride"] = o.eval_stride;
   }
   if (const auto samples = SurfaceSamples(reader, config.resolution_m / 2.0)) {

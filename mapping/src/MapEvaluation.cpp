@@ -73,13 +73,20 @@ PointAccuracy PointAccuracyCounter::Evaluate(const DualOcTree& final_map) const 
     if (!kept) result.dynamic_removed += counts.dynamic_points;
     if (centre.z() < 2.0 * key_frame_.getResolution()) {
       result.dynamic_points_near_floor += counts.dynamic_points;
-      if (kept) result.dynamic_kept_near_floor += counts.dynamic_points;
+      result.static_points_near_floor += counts.static_points;
+      if (kept) {
+        result.dynamic_kept_near_floor += counts.dynamic_points;
+        result.static_kept_near_floor += counts.static_points;
+      }
     }
   }
   const std::uint64_t above_floor = result.dynamic_points - result.dynamic_points_near_floor;
   const std::uint64_t removed_above_floor = result.dynamic_removed -
       (result.dynamic_points_near_floor - result.dynamic_kept_near_floor);
   result.dynamic_accuracy_above_floor = Ratio(removed_above_floor, above_floor, 1.0);
+  result.static_accuracy_above_floor =
+      Ratio(result.static_kept - result.static_kept_near_floor,
+            result.static_points - result.static_points_near_floor, 1.0);
   result.static_accuracy = Ratio(result.static_kept, result.static_points, 1.0);
   result.dynamic_accuracy = Ratio(result.dynamic_removed, result.dynamic_points, 1.0);
   result.associated_accuracy = std::sqrt(result.static_accuracy * result.dynamic_accuracy);

@@ -159,6 +159,38 @@ TEST(DynamicSceneTest, DynamicPointsInTheFloorLayerAreCountedApart) {
   EXPECT_DOUBLE_EQ(accuracy.dynamic_accuracy_above_floor, 1.0);
 }
 
+// The same split for static points: a floor point that is kept and a wall point that never
+// made it into the map say apart which of the two layers SA misses.
+TEST(DynamicSceneTest, StaticPointsInTheFloorLayerAreCountedApart) {
+  DualMap map{MappingConfig{}};
+  robotio::DepthRays floor;
+  floor.origin = Eigen::Vector3f(0.02f, 0.02f, 0.5f);
+  floor.ends = {Eigen::Vector3f(1.02f, 0.02f, 0.02f)};
+  floor.hit = {true};
+  map.InsertRays(floor);
+  robotio::DepthFrame depth;
+  depth.width = depth.height = 1;
+  depth.intrinsics.fx = depth.intrinsics.fy = 1.0;
+  depth.intrinsics.cx = depth.intrinsics.cy = 0.0;
+  depth.depth_mm = {1000};
+  robotio::LabelFrame labels;
+  labels.width = labels.height = 1;
+  labels.labels = {1};
+  robotio::KinectMount mount;
+  mount.T_base_kinect.linear() = robotio::BodyFromOptical();  // Looking along map x.
+  PointAccuracyCounter counter(map.config().resolution_m, 4.0, 1);
+  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, 0.02);  // Floor, mapped.
+  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
+  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, 1.02);  // Wall, never mapped.
+  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
+  const PointAccuracy accuracy = counter.Evaluate(map.tree());
+  EXPECT_EQ(accuracy.static_points, 2u);
+  EXPECT_EQ(accuracy.static_points_near_floor, 1u);
+  EXPECT_EQ(accuracy.static_kept_near_floor, 1u);
+  EXPECT_DOUBLE_EQ(accuracy.static_accuracy, 0.5);
+  EXPECT_DOUBLE_EQ(accuracy.static_accuracy_above_floor, 0.0);
+}
+
 TEST(DynamicSceneTest, SurfacePrecisionAndCompletenessAgainstTrueSamples) {
   const DualMap map = WalkThrough(UpdateMode::kDynamic);
   // True wall samples in the sensor's view (and some far outside it).

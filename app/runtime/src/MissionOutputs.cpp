@@ -168,6 +168,7 @@ robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra
       {"dynamic_accuracy", r.dynamic_accuracy},
       {"associated_accuracy", r.associated_accuracy},
       {"dynamic_accuracy_above_floor", r.dynamic_accuracy_above_floor},
+      {"static_accuracy_above_floor", r.static_accuracy_above_floor},
       {"frames_delivered", r.frames_delivered},
       {"frames_dropped", r.frames_dropped},
       {"frames_processed", r.frames_processed},

@@ -435,6 +435,7 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
     r.dynamic_accuracy = accuracy.dynamic_accuracy;
     r.associated_accuracy = accuracy.associated_accuracy;
     r.dynamic_accuracy_above_floor = accuracy.dynamic_accuracy_above_floor;
+    r.static_accuracy_above_floor = accuracy.static_accuracy_above_floor;
     const TruthGrid truth_grid =
         BuildTruthGrid(*world_, mapping_->grid(), footprint_radius_m_,
                        config_.planning.projection.robot_height_m, r.mission_time_s);
@@ -448,7 +449,7 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
     r.surface_coverage = coverage->Fraction();
   } else {
     r.static_accuracy = r.dynamic_accuracy = r.associated_accuracy = kUnknown;
-    r.dynamic_accuracy_above_floor = kUnknown;
+    r.dynamic_accuracy_above_floor = r.static_accuracy_above_floor = kUnknown;
     r.explored_free_fraction = r.surface_coverage = kUnknown;
   }
 

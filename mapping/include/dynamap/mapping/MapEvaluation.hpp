@@ -32,6 +32,11 @@ struct PointAccuracy {
   std::uint64_t dynamic_kept_near_floor = 0;
   // DA over the dynamic points above that layer (1 when none).
   double dynamic_accuracy_above_floor = 0.0;
+  // The same split for the static points: the floor's own points and what stands on it.
+  std::uint64_t static_points_near_floor = 0;
+  std::uint64_t static_kept_near_floor = 0;
+  // SA over the static points above that layer (1 when none).
+  double static_accuracy_above_floor = 0.0;
 };
 
 // Collects the labelled depth points of a run by voxel (so a long run needs memory per
