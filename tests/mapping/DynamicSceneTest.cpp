@@ -126,16 +126,17 @@ TEST(DynamicSceneTest, PointAccuracyScoresKeptStaticAndRemovedDynamicPoints) {
   EXPECT_DOUBLE_EQ(accuracy.associated_accuracy, 1.0);
 }
 
-// A foot in the floor's voxel is kept with the floor: it counts against DA, and the
-// near-floor figures say how much of DA that is.
-TEST(DynamicSceneTest, DynamicPointsInTheFloorLayerAreCountedApart) {
+// Two points of one label, seen by a one-pixel Kinect looking along map x from 1 m away,
+// against a map holding only the floor voxel at (1.02, 0.02, 0.02): one point in that
+// voxel, one at (1.02, 0.02, 1.02), never mapped.
+PointAccuracy FloorPointAndPointAboveIt(std::uint16_t label) {
   DualMap map{MappingConfig{}};
   robotio::DepthRays floor;
   floor.origin = Eigen::Vector3f(0.02f, 0.02f, 0.5f);
   floor.ends = {Eigen::Vector3f(1.02f, 0.02f, 0.02f)};
   floor.hit = {true};
   map.InsertRays(floor);
-  ASSERT_TRUE(map.IsStaticOccupied({1.02f, 0.02f, 0.02f}));
+  EXPECT_TRUE(map.IsStaticOccupied({1.02f, 0.02f, 0.02f}));
   robotio::DepthFrame depth;
   depth.width = depth.height = 1;
   depth.intrinsics.fx = depth.intrinsics.fy = 1.0;
@@ -143,15 +144,22 @@ TEST(DynamicSceneTest, DynamicPointsInTheFloorLayerAreCountedApart) {
   depth.depth_mm = {1000};
   robotio::LabelFrame labels;
   labels.width = labels.height = 1;
-  labels.labels = {static_cast<std::uint16_t>(2 | robotio::LabelFrame::kDynamicBit)};
+  labels.labels = {label};
   robotio::KinectMount mount;
   mount.T_base_kinect.linear() = robotio::BodyFromOptical();  // Looking along map x.
   PointAccuracyCounter counter(map.config().resolution_m, 4.0, 1);
-  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, 0.02);  // Foot: (1.02, 0.02, 0.02).
-  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
-  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, 1.02);  // Chest, never mapped.
-  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
-  const PointAccuracy accuracy = counter.Evaluate(map.tree());
+  for (const double z : {0.02, 1.02}) {
+    mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, z);
+    counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
+  }
+  return counter.Evaluate(map.tree());
+}
+
+// A foot in the floor's voxel is kept with the floor: it counts against DA, and the
+// near-floor figures say how much of DA that is (the chest above is removed).
+TEST(DynamicSceneTest, DynamicPointsInTheFloorLayerAreCountedApart) {
+  const PointAccuracy accuracy =
+      FloorPointAndPointAboveIt(static_cast<std::uint16_t>(2 | robotio::LabelFrame::kDynamicBit));
   EXPECT_EQ(accuracy.dynamic_points, 2u);
   EXPECT_EQ(accuracy.dynamic_points_near_floor, 1u);
   EXPECT_EQ(accuracy.dynamic_kept_near_floor, 1u);
@@ -159,31 +167,10 @@ TEST(DynamicSceneTest, DynamicPointsInTheFloorLayerAreCountedApart) {
   EXPECT_DOUBLE_EQ(accuracy.dynamic_accuracy_above_floor, 1.0);
 }
 
-// The same split for static points: a floor point that is kept and a wall point that never
-// made it into the map say apart which of the two layers SA misses.
+// The same split for static points: the floor point is kept, the wall point above never
+// made it into the map, and the split says which of the two layers SA misses.
 TEST(DynamicSceneTest, StaticPointsInTheFloorLayerAreCountedApart) {
-  DualMap map{MappingConfig{}};
-  robotio::DepthRays floor;
-  floor.origin = Eigen::Vector3f(0.02f, 0.02f, 0.5f);
-  floor.ends = {Eigen::Vector3f(1.02f, 0.02f, 0.02f)};
-  floor.hit = {true};
-  map.InsertRays(floor);
-  robotio::DepthFrame depth;
-  depth.width = depth.height = 1;
-  depth.intrinsics.fx = depth.intrinsics.fy = 1.0;
-  depth.intrinsics.cx = depth.intrinsics.cy = 0.0;
-  depth.depth_mm = {1000};
-  robotio::LabelFrame labels;
-  labels.width = labels.height = 1;
-  labels.labels = {1};
-  robotio::KinectMount mount;
-  mount.T_base_kinect.linear() = robotio::BodyFromOptical();  // Looking along map x.
-  PointAccuracyCounter counter(map.config().resolution_m, 4.0, 1);
-  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, 0.02);  // Floor, mapped.
-  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
-  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, 1.02);  // Wall, never mapped.
-  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
-  const PointAccuracy accuracy = counter.Evaluate(map.tree());
+  const PointAccuracy accuracy = FloorPointAndPointAboveIt(1);
   EXPECT_EQ(accuracy.static_points, 2u);
   EXPECT_EQ(accuracy.static_points_near_floor, 1u);
   EXPECT_EQ(accuracy.static_kept_near_floor, 1u);
