@@ -41,9 +41,9 @@ struct MappingConfig {
   // One voxel is not enough for a surface on a voxel boundary: the free space was traced to
   // the centre of the voxel holding this point, up to half a voxel nearer the surface (now
   // along a real ray to it), and noisy points of the surface fill the voxel layer on either
-  // side of the boundary. With one voxel, the floor just in front of the robot, where no
-  // nearer hit protects it (surface_band), was cleared and turned dynamic in rings wherever
-  // the robot turned.
+  // side of the boundary. With
+  // one voxel, the floor just in front of the robot, where no nearer hit protects it
+  // (surface_band), was cleared and turned dynamic in rings wherever the robot turned.
   double surface_margin_voxels = 2.0;
   // |cos| of the incidence angle below which a hit counts as this grazing (the margin along
   // the ray is at most surface_margin_voxels * resolution_m / min_incidence_cos).
