@@ -313,19 +313,6 @@ TEST(DualOcTreeTest, VoxelsNextToAHitAreNotObservedFreeInThatScan) {
   }
 }
 
-// Free space is traced along the ray itself, not to the centre of its end voxel: the line
-// from (0.025, 0.025) to the centre (1.025, 0.075) of the end voxel of (1.001, 0.051)
-// enters the row y in [0.05, 0.10) at x = 0.525, the ray only at x = 0.96. The voxel at
-// x in [0.60, 0.65) of that row may be solid (a wall end beside a doorway).
-TEST(DualOcTreeTest, FreeSpaceFollowsTheRayNotTheCentreOfItsEndVoxel) {
-  DualMap map{ThesisRuleConfig()};
-  map.InsertRays(SingleRay({0.025f, 0.025f, 0.025f}, {1.001f, 0.051f, 0.025f}, true));
-  EXPECT_EQ(map.StaticState({0.625f, 0.075f, 0.025f}), VoxelState::kUnknown);
-  EXPECT_EQ(map.StaticState({0.625f, 0.025f, 0.025f}), VoxelState::kFree);
-  EXPECT_EQ(map.StaticState({0.925f, 0.025f, 0.025f}), VoxelState::kFree);
-  EXPECT_TRUE(map.IsStaticOccupied({1.025f, 0.075f, 0.025f}));
-}
-
 TEST(DualOcTreeTest, NeverObservedVoxelsAreUnknown) {
   DualMap map{ThesisRuleConfig()};
   EXPECT_EQ(map.StaticState({1, 1, 1}), VoxelState::kUnknown);

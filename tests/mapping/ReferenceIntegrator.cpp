@@ -28,7 +28,6 @@ void ReferenceInsert(DualOcTree& tree, const std::vector<robotio::DepthRays>& ra
     const octomap::point3d origin(rays.origin.x(), rays.origin.y(), rays.origin.z());
     octomap::OcTreeKey origin_key;
     if (!tree.coordToKeyChecked(origin, origin_key)) continue;
-    octomap::KeySet traced_ends;  // Of this origin: the first ray into each voxel is traced.
     for (std::size_t i = 0; i < rays.ends.size(); ++i) {
       octomap::OcTreeKey end;
       const Eigen::Vector3f& p = rays.ends[i];
@@ -41,9 +40,7 @@ void ReferenceInsert(DualOcTree& tree, const std::vector<robotio::DepthRays>& ra
                                   free_key)) {
         continue;
       }
-      if (!traced_ends.insert(free_key).second) continue;
-      if (tree.computeRayKeys(origin, octomap::point3d(free_end->x(), free_end->y(), free_end->z()),
-                              ray)) {
+      if (tree.computeRayKeys(origin, tree.keyToCoord(free_key), ray)) {
         free_keys.insert(ray.begin(), ray.end());
       }
     }

@@ -38,10 +38,9 @@ struct MappingConfig {
   // robot's map (and, once free, Table 4.1 keeps them out of the static map for good).
   // A hit ray observes free space only until it comes within this distance, in voxels and
   // measured along the surface normal, of the surface it hit; 0 = up to its end voxel.
-  // One voxel is not enough for a surface on a voxel boundary: the free space was traced to
-  // the centre of the voxel holding this point, up to half a voxel nearer the surface (now
-  // along a real ray to it), and noisy points of the surface fill the voxel layer on either
-  // side of the boundary. With
+  // One voxel is not enough for a surface on a voxel boundary: the free space is traced to
+  // the centre of the voxel holding this point, up to half a voxel nearer the surface, and
+  // noisy points of the surface fill the voxel layer on either side of the boundary. With
   // one voxel, the floor just in front of the robot, where no nearer hit protects it
   // (surface_band), was cleared and turned dynamic in rings wherever the robot turned.
   double surface_margin_voxels = 2.0;

@@ -24,9 +24,8 @@ struct ScanStatistics {
 };
 
 // Rules of one scan: each ray's end point is discretised to its voxel and observed
-// occupied when the ray hit. Free space: per origin and voxel holding a FreeSpaceEnd, the
-// voxels along the first such ray up to that voxel (excluded) are observed free (one trace
-// per distinct end voxel; the line stays a real ray), except voxels hit in this scan
+// occupied when the ray hit. Free space: the voxels from the origin to the centre of the
+// voxel holding FreeSpaceEnd (excluded) are observed free, except voxels hit in this scan
 // (a voxel both hit and traversed counts as hit) and, with `surface_band`, their 26
 // neighbours. Every voxel is updated once per scan with ApplyObservation.
 //
@@ -77,13 +76,7 @@ class ScanIntegrator {
   std::uint64_t last_block_id_ = ~0ull;
   std::vector<octomap::OcTreeKey> end_keys_;  // Of all sets, one after the other.
   std::vector<bool> end_valid_;
-  // The distinct free-space end voxels of one origin, each with the free end of the first
-  // ray that ends there (the one traced).
-  struct FreeEnd {
-    octomap::OcTreeKey key;
-    octomap::point3d point;
-  };
-  std::vector<FreeEnd> unique_ends_;
+  std::vector<octomap::OcTreeKey> unique_ends_;
   std::vector<octomap::OcTreeKey> hit_keys_;  // Distinct hit voxels of the scan.
   std::vector<std::int32_t> order_;
   octomap::KeyRay key_ray_;
