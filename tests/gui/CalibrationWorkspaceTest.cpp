@@ -54,7 +54,7 @@ class CalibrationWorkspaceTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(workspace.LastState().progress.step, cal::SessionStep::kTurn, 5000);
     workspace.Solve();
     QTRY_COMPARE_WITH_TIMEOUT(workspace.LastState().progress.step, cal::SessionStep::kReview,
-                              60000);
+                              180000);
     QTRY_VERIFY_WITH_TIMEOUT(workspace.Results()->Table()->rowCount() > 0, 5000);
     // 7 parameters per Kinect and the two wheel scales.
     QCOMPARE(workspace.Results()->Table()->rowCount(), 2 * 7 + 2);
@@ -79,7 +79,9 @@ class CalibrationWorkspaceTest : public QObject {
     QSignalSpy started(&workspace, &CalibrationWorkspace::SessionStarted);
     workspace.BeginSession(workspace.BuildSetup());
     QVERIFY(started.wait(20000));
-    QTRY_VERIFY_WITH_TIMEOUT(workspace.LastState().replay_fraction >= 1.0, 60000);
+    // Generous: the wait ends as soon as the replay does, which took 94 s once while two
+    // explorations shared the machine's two cores.
+    QTRY_VERIFY_WITH_TIMEOUT(workspace.LastState().replay_fraction >= 1.0, 240000);
     QVERIFY(workspace.LastState().replay);
     // The floor step ended when the wheels first moved; the turns were counted.
     QVERIFY(workspace.LastState().progress.step != cal::SessionStep::kFloor);
@@ -91,7 +93,7 @@ class CalibrationWorkspaceTest : public QObject {
 
     workspace.Solve();
     QTRY_COMPARE_WITH_TIMEOUT(workspace.LastState().progress.step, cal::SessionStep::kReview,
-                              60000);
+                              180000);
     QTRY_COMPARE_WITH_TIMEOUT(workspace.Results()->Table()->rowCount(), 2 * 7 + 2, 5000);
     // The rig is drawn on the robot where it was estimated, with its uncertainty.
     const RigView* rig = workspace.Results()->Rig3d();

@@ -136,7 +136,7 @@ class ScreenshotTest : public QObject {
     QSignalSpy started(calibration, &CalibrationWorkspace::SessionStarted);
     calibration->BeginSession(calibration->BuildSetup());
     QVERIFY(started.wait(20000));
-    QTRY_VERIFY_WITH_TIMEOUT(calibration->LastState().replay_fraction >= 1.0, 120000);
+    QTRY_VERIFY_WITH_TIMEOUT(calibration->LastState().replay_fraction >= 1.0, 240000);
     calibration->Solve();
     QTRY_COMPARE_WITH_TIMEOUT(calibration->LastState().progress.step,
                               calibration::SessionStep::kReview, 60000);
