@@ -54,7 +54,7 @@ class CalibrationWorkspaceTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(workspace.LastState().progress.step, cal::SessionStep::kTurn, 5000);
     workspace.Solve();
     QTRY_COMPARE_WITH_TIMEOUT(workspace.LastState().progress.step, cal::SessionStep::kReview,
-                              180000);
+                              60000);
     QTRY_VERIFY_WITH_TIMEOUT(workspace.Results()->Table()->rowCount() > 0, 5000);
     // 7 parameters per Kinect and the two wheel scales.
     QCOMPARE(workspace.Results()->Table()->rowCount(), 2 * 7 + 2);
@@ -93,7 +93,7 @@ class CalibrationWorkspaceTest : public QObject {
 
     workspace.Solve();
     QTRY_COMPARE_WITH_TIMEOUT(workspace.LastState().progress.step, cal::SessionStep::kReview,
-                              180000);
+                              60000);
     QTRY_COMPARE_WITH_TIMEOUT(workspace.Results()->Table()->rowCount(), 2 * 7 + 2, 5000);
     // The rig is drawn on the robot where it was estimated, with its uncertainty.
     const RigView* rig = workspace.Results()->Rig3d();

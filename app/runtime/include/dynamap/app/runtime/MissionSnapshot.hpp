@@ -58,7 +58,7 @@ struct MissionReport {
   double dynamic_accuracy = 0.0;
   double associated_accuracy = 0.0;
   double dynamic_accuracy_above_floor = 0.0;  // mapping::PointAccuracy: feet left out.
-  double static_accuracy_above_floor = 0.0;   // ... and the floor's own points.
+  double static_accuracy_above_floor = 0.0;   // ... SA without the floor layer's points.
   std::int64_t frames_delivered = 0;
   std::int64_t frames_dropped = 0;
   std::int64_t frames_processed = 0;
