@@ -23,10 +23,16 @@ PlanningWorker::PlanningWorker(Mediator& mediator, PlanningWorkerConfig config)
       blocked_(planning::BlockedWayConfig{config_.blocked_wait_s, 1.0}),
       dropped_([this] {
         planning::DroppedTargetConfig dropped;
-        dropped.arrived_m = 2.0 * config_.planning.follower.goal_tolerance_m + config_.resolution_m;
+        dropped.arrived_m = ArrivedM();
         dropped.same_region_m = config_.planning.targets.blacklist.radius_m;
         return dropped;
-      }()) {}
+      }()),
+      arrival_({ArrivedM(), config_.planning.follower.face_tolerance_rad,
+                config_.face_timeout_s}) {}
+
+double PlanningWorker::ArrivedM() const {
+  return 2.0 * config_.planning.follower.goal_tolerance_m + config_.resolution_m;
+}
 
 planning::GridMap PlanningWorker::PrepareGrid(const planning::GridMap& seen,
                                               const robotio::Pose2D& pose) const {
@@ -42,26 +48,6 @@ planning::GridMap PlanningWorker::PrepareGrid(const planning::GridMap& seen,
   return grid;
 }
 
-bool PlanningWorker::FacingCurrentTarget(const planning::GridMap& grid,
-                                         const robotio::Pose2D& pose, double now_s) {
-  if (!current_target_) {
-    arrived_s_.reset();
-    return false;
-  }
-  const planning::GridIndex vp = current_target_->viewpoint;
-  const planning::GridIndex look = current_target_->region_center;
-  const double tolerance = config_.planning.follower.goal_tolerance_m + grid.resolution_m;
-  if (std::hypot(grid.CenterX(vp.x) - pose.x, grid.CenterY(vp.y) - pose.y) > tolerance) {
-    arrived_s_.reset();
-    return false;
-  }
-  if (!arrived_s_) arrived_s_ = now_s;
-  const double error = robotio::WrapAngle(
-      std::atan2(grid.CenterY(look.y) - pose.y, grid.CenterX(look.x) - pose.x) - pose.theta);
-  return std::abs(error) > config_.planning.follower.face_tolerance_rad &&
-         now_s - *arrived_s_ < config_.face_timeout_s;
-}
-
 void PlanningWorker::PlanOnce(double now_s) {
   // Nothing is judged before the first look around: one narrow view is not a map.
   if (!mediator_.counters.looked_around.load()) return;
@@ -69,7 +55,7 @@ void PlanningWorker::PlanOnce(double now_s) {
   if (!projected || !projected->value) return;
   const auto start = std::chrono::steady_clock::now();
   const robotio::Pose2D pose = mediator_.CurrentPose();
-  if (FacingCurrentTarget(projected->value->map, pose, now_s)) return;
+  if (arrival_.StillFacing(projected->value->map, current_target_, pose, now_s)) return;
   // The floor assumed around visited places (too close for the Kinects to see) counts as
   // known, so frontiers lie beyond it and never at the robot's own feet.
   obstacles_.Add(mediator_.TakeObstacles(), robotio::Pose2D{}, now_s);
@@ -117,8 +103,7 @@ void PlanningWorker::PlanOnce(double now_s) {
   planning::GridIndex goal_cell = decision.cell;
   if (decision.kind != planning::TargetKind::kReturnToStart) {
     planning::TargetSelectionConfig selection_config;
-    selection_config.near_m =
-        2.0 * config_.planning.follower.goal_tolerance_m + grid.resolution_m;
+    selection_config.near_m = ArrivedM();
     const planning::TargetSelection selection = planning::SelectTarget(
         decision.candidates, current_target_, grid, robot, selection_config);
     for (const auto& near : selection.too_near) targets_.ReportFailure(near, now_s);

@@ -16,6 +16,7 @@
 #include "dynamap/planning/TargetPlanner.hpp"
 #include "dynamap/planning/TargetSelection.hpp"
 #include "dynamap/planning/TemporaryObstacles.hpp"
+#include "dynamap/planning/ViewpointArrival.hpp"
 
 namespace dynamap::app::runtime {
 
@@ -45,10 +46,9 @@ class PlanningWorker {
 
  private:
   void PlanOnce(double now_s);
-  // True while the robot stands at the current target's viewpoint and still turns to face
-  // it (the control worker does the turning): judging it now would count it as failed.
-  bool FacingCurrentTarget(const planning::GridMap& grid, const robotio::Pose2D& pose,
-                           double now_s);
+  // m, the robot this near a viewpoint has reached it: there it looks, and a viewpoint this
+  // near is not chosen again (twice the follower's goal tolerance plus a cell).
+  [[nodiscard]] double ArrivedM() const;
   // `seen` with the floor around visited places (too close for the Kinects) drivable.
   [[nodiscard]] planning::GridMap PrepareGrid(const planning::GridMap& seen,
                                               const robotio::Pose2D& pose) const;
@@ -64,8 +64,8 @@ class PlanningWorker {
   planning::TargetCandidate goal_target_;  // What the goal was chosen for (blacklisting).
   std::optional<planning::TargetCandidate> current_target_;  // Kept across re-plans.
   planning::DroppedTargetKeeper dropped_;  // A target that drops out, still driven to.
+  planning::ViewpointArrival arrival_;  // Not judged while turning to look from there.
   double goal_since_s_ = 0.0;
-  std::optional<double> arrived_s_;  // When the robot reached the current viewpoint.
   std::vector<double> plan_ms_;
 };
 
