@@ -179,6 +179,7 @@ robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra
       {"plans", r.plans},
       {"unreachable_targets", r.unreachable_targets},
       {"blocked_plans", r.blocked_plans},
+      {"squeezed_plans", r.squeezed_plans},
       {"planner_median_ms", r.plan_median_ms},
       {"planner_p95_ms", r.plan_p95_ms},
       {"map_insert_median_ms", r.insert_median_ms},

@@ -9,6 +9,7 @@
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/FloorGaps.hpp"
 #include "dynamap/planning/PathShortening.hpp"
+#include "dynamap/planning/SqueezePath.hpp"
 #include "dynamap/planning/TargetSelection.hpp"
 #include "dynamap/robotio/Time.hpp"
 
@@ -147,7 +148,9 @@ void PlanningWorker::PlanOnce(double now_s) {
     goal_since_s_ = now_s;
     search_->SetGoal(goal_);
   }
-  const planning::GridPath path = search_->Plan();
+  planning::GridPath path = search_->Plan();
+  const planning::TraversalGrid* path_grid = &search_->grid();  // What the path avoids.
+  std::optional<planning::SqueezePath> squeeze;
   if (!path.found) {
     // Blocked only by people (or a door that has just closed): wait for a while, facing
     // the way, so that the Kinects see it clear; the target stays.
@@ -167,6 +170,13 @@ void PlanningWorker::PlanOnce(double now_s) {
       plan.path_map = {plan.goal_map};
       plan.look_at_map = Eigen::Vector2d(grid.CenterX(blocked.look_at.x),
                                          grid.CenterY(blocked.look_at.y));
+    } else if ((squeeze = planning::FindSqueezePath(grid, config_.planning.cost, robot, goal_))) {
+      spdlog::debug("t {:.1f} s: no path to ({}, {}) with the full radius, squeezing through "
+                    "with {:.3f} m", now_s, goal_.x, goal_.y,
+                    planning::SqueezeRadius(config_.planning.cost, grid.resolution_m));
+      ++mediator_.counters.squeezed_plans;
+      path = squeeze->path;
+      path_grid = &squeeze->grid;
     } else {
       spdlog::debug("t {:.1f} s: no path from ({}, {}) to ({}, {})", now_s, robot.x, robot.y,
                     goal_.x, goal_.y);
@@ -175,7 +185,8 @@ void PlanningWorker::PlanOnce(double now_s) {
       goal_ = {-1, -1};
       current_target_.reset();
     }
-  } else if (now_s - goal_since_s_ > config_.target_timeout_s) {
+  }
+  if (path.found && now_s - goal_since_s_ > config_.target_timeout_s) {
     targets_.ReportFailure(goal_target_, now_s);
     goal_since_s_ = now_s;
   }
@@ -190,7 +201,7 @@ void PlanningWorker::PlanOnce(double now_s) {
       plan.look_at_map = Eigen::Vector2d(grid.CenterX(look.x), grid.CenterY(look.y));
     }
     plan.goal_map = {grid.CenterX(goal_.x), grid.CenterY(goal_.y)};
-    for (const planning::GridIndex& c : planning::ShortenPath(search_->grid(), path.cells)) {
+    for (const planning::GridIndex& c : planning::ShortenPath(*path_grid, path.cells)) {
       plan.path_map.emplace_back(grid.CenterX(c.x), grid.CenterY(c.y));
     }
   }

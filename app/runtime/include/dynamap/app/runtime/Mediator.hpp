@@ -70,6 +70,7 @@ struct MissionCounters {
   std::atomic<std::int64_t> plans{0};
   std::atomic<std::int64_t> unreachable_targets{0};
   std::atomic<std::int64_t> blocked_plans{0};  // Plans that waited for people to move on.
+  std::atomic<std::int64_t> squeezed_plans{0};  // Paths only the squeeze radius found.
   // Simulated time up to which each worker has finished its work (lockstep pacing).
   std::atomic<std::int64_t> slam_done_ns{-1};
   std::atomic<std::int64_t> planning_done_ns{-1};

@@ -1,0 +1,25 @@
+#include "dynamap/planning/SqueezePath.hpp"
+
+#include "dynamap/planning/AStar.hpp"
+
+namespace dynamap::planning {
+
+double SqueezeRadius(const CostFieldConfig& cost, double resolution_m) {
+  return cost.robot_radius_m - 0.5 * resolution_m;
+}
+
+std::optional<SqueezePath> FindSqueezePath(const GridMap& map, const CostFieldConfig& cost,
+                                           GridIndex robot, GridIndex goal) {
+  CostFieldConfig squeezed = cost;
+  squeezed.robot_radius_m = SqueezeRadius(cost, map.resolution_m);
+  // A wall is bumped, a pit is fallen into: the stair hole keeps its whole distance.
+  squeezed.hole_margin_m = cost.hole_margin_m + (cost.robot_radius_m - squeezed.robot_radius_m);
+  SqueezePath squeeze{BuildTraversalGrid(map, squeezed), {}};
+  if (!squeeze.grid.Contains(robot) || squeeze.grid.Blocked(goal)) return std::nullopt;
+  if (squeeze.grid.Blocked(robot)) squeeze.grid.penalty[squeeze.grid.Index(robot)] = 10.0;
+  squeeze.path = AStarSearch(squeeze.grid, robot, goal);
+  if (!squeeze.path.found) return std::nullopt;
+  return squeeze;
+}
+
+}  // namespace dynamap::planning
