@@ -208,7 +208,10 @@ ScanStatistics ScanIntegrator::Insert(DualOcTree& tree,
       }
     }
   }
-  if (rules.surface_band) ClearSurfaceBand();
+  if (rules.surface_band) {
+    ClearSurfaceBand(rules.floor_plane ? std::optional<octomap::key_type>(FloorLayerKey(tree))
+                                       : std::nullopt);
+  }
   UpdateTree(tree, rules, &stats);
   return stats;
 }
@@ -228,9 +231,14 @@ ScanIntegrator::Block* ScanIntegrator::FindBlock(const octomap::OcTreeKey& key) 
   return slot < 0 ? nullptr : &blocks_[static_cast<std::size_t>(slot)];
 }
 
-void ScanIntegrator::ClearSurfaceBand() {
+octomap::key_type FloorLayerKey(const DualOcTree& tree) {
+  return tree.coordToKey(0.5 * tree.getResolution());
+}
+
+void ScanIntegrator::ClearSurfaceBand(std::optional<octomap::key_type> floor_layer) {
   for (const octomap::OcTreeKey& key : hit_keys_) {
-    for (int dz = -1; dz <= 1; ++dz) {
+    const int top = floor_layer && key[2] == *floor_layer ? 0 : 1;  // Nothing above the floor.
+    for (int dz = -1; dz <= top; ++dz) {
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
           const octomap::OcTreeKey n(static_cast<octomap::key_type>(key[0] + dx),
@@ -249,6 +257,14 @@ void ScanIntegrator::ClearSurfaceBand() {
 std::optional<Eigen::Vector3f> FreeSpaceEnd(const robotio::DepthRays& rays, std::size_t i,
                                             const UpdateRules& rules) {
   const Eigen::Vector3f& end = rays.ends[i];
+  if (rules.floor_plane && rays.hit[i]) {
+    // A floor hit from above: free down to the middle of the layer above the floor layers.
+    const float above = 1.5f * rules.resolution_m;
+    const float z0 = rays.origin.z();
+    if (end.z() >= -rules.resolution_m && end.z() < rules.resolution_m && z0 > above) {
+      return rays.origin + (end - rays.origin) * ((z0 - above) / (z0 - end.z()));
+    }
+  }
   if (rules.surface_margin_m <= 0.0f || rays.incidence_cos.empty()) return end;
   const Eigen::Vector3f ray = end - rays.origin;
   const float length = ray.norm();

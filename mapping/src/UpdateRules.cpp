@@ -18,6 +18,8 @@ UpdateRules UpdateRules::FromConfig(const MappingConfig& config) {
   rules.surface_margin_m = static_cast<float>(config.surface_margin_voxels * config.resolution_m);
   rules.min_incidence_cos = static_cast<float>(config.min_incidence_cos);
   rules.surface_band = config.surface_band;
+  rules.floor_plane = config.floor_plane;
+  rules.resolution_m = static_cast<float>(config.resolution_m);
   if (config.persistence_observations > 0) {
     rules.persistence_step = (rules.free_threshold - rules.clamp_min) /
                              static_cast<float>(config.persistence_observations);

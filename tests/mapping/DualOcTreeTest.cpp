@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "ReferenceIntegrator.hpp"
@@ -193,8 +194,11 @@ TEST(DualOcTreeTest, AScanFromTwoOriginsUpdatesEachVoxelOnce) {
   const DualOcTreeNode* crossing = map.tree().search(1.02, 0.02, 0.02);
   ASSERT_NE(crossing, nullptr);
   EXPECT_FLOAT_EQ(crossing->StaticLogOdds(), map.rules().high);  // Hit, not traversed.
-  // Two origins whose rays share their last voxels before a common end.
-  DualMap shared{ThesisRuleConfig()};
+  // Two origins whose rays share their last voxels before a common end (on the floor
+  // plane, whose own rule is tested below).
+  MappingConfig no_floor = ThesisRuleConfig();
+  no_floor.floor_plane = false;
+  DualMap shared{no_floor};
   scan = {SingleRay({0.02f, 0.02f, 0.02f}, {2.02f, 0.02f, 0.02f}, true),
           SingleRay({0.02f, 0.02f, 0.22f}, {2.02f, 0.02f, 0.02f}, true)};
   shared.InsertScan(scan);
@@ -202,7 +206,7 @@ TEST(DualOcTreeTest, AScanFromTwoOriginsUpdatesEachVoxelOnce) {
   ASSERT_NE(traversed, nullptr);
   EXPECT_FLOAT_EQ(traversed->StaticLogOdds(), shared.rules().low);  // One observation.
   // Inserted one after the other, the same voxel is observed twice.
-  DualMap separate{ThesisRuleConfig()};
+  DualMap separate{no_floor};
   for (const robotio::DepthRays& rays : scan) separate.InsertRays(rays);
   EXPECT_FLOAT_EQ(separate.tree().search(1.87, 0.02, 0.02)->StaticLogOdds(),
                   2.0f * separate.rules().low);
@@ -290,6 +294,7 @@ TEST(DualOcTreeTest, WithoutTheSurfaceMarginGrazingRaysClearTheFloor) {
   MappingConfig config;
   config.surface_margin_voxels = 0.0;  // OctoMap's rule: free up to the end voxel.
   config.surface_band = false;
+  config.floor_plane = false;
   DualMap map = MapWithHitFloorVoxel(config);
   for (int scan = 0; scan < 8; ++scan) map.InsertRays(GrazingFloorRay());
   EXPECT_EQ(map.StaticState(kFloorVoxel), VoxelState::kFree);
@@ -311,6 +316,62 @@ TEST(DualOcTreeTest, VoxelsNextToAHitAreNotObservedFreeInThatScan) {
     EXPECT_EQ(map.StaticState({1.52f, 0.02f, 0.02f}), VoxelState::kFree);
     EXPECT_TRUE(map.IsStaticOccupied({2.02f, 0.07f, 0.02f}));
   }
+}
+
+// The floor seen from the rig's height (1 m), a strip of points at z = 0.01 from 0.5 m to
+// 3.5 m ahead, each with its incidence on the horizontal floor.
+robotio::DepthRays FloorStrip() {
+  robotio::DepthRays rays;
+  rays.origin = Eigen::Vector3f(0.02f, 0.02f, 1.0f);
+  for (float x = 0.5f; x < 3.5f; x += 0.01f) {
+    rays.ends.emplace_back(x, 0.02f, 0.01f);
+    rays.hit.push_back(true);
+    rays.incidence_cos.push_back(0.99f / std::hypot(x - 0.02f, 0.99f));
+  }
+  return rays;
+}
+
+TEST(DualOcTreeTest, TheLayerAboveTheFloorIsSeenFreeTheFloorStaysOccupied) {
+  for (const bool floor_plane : {true, false}) {
+    MappingConfig config = ThesisRuleConfig();  // One free observation makes a voxel free.
+    config.floor_plane = floor_plane;
+    DualMap map{config};
+    map.InsertRays(FloorStrip());
+    int free_above = 0;
+    int voxels = 0;
+    for (float x = 1.025f; x < 3.0f; x += 0.05f) {
+      ++voxels;
+      EXPECT_TRUE(map.IsStaticOccupied({x, 0.025f, 0.025f})) << "floor at x " << x;
+      free_above += map.StaticState({x, 0.025f, 0.075f}) == VoxelState::kFree ? 1 : 0;
+    }
+    // Where a person's feet stood is seen empty again; without the rule it never is.
+    if (floor_plane) {
+      EXPECT_GE(free_above, voxels - 2);
+    } else {
+      EXPECT_EQ(free_above, 0);
+    }
+    EXPECT_EQ(map.StaticState({2.025f, 0.025f, 0.175f}), VoxelState::kFree);
+  }
+}
+
+TEST(DualOcTreeTest, FeetAboveTheFloorLeaveTheDynamicMapWhenTheyHaveGone) {
+  DualMap map{MappingConfig{}};
+  for (int scan = 0; scan < 10; ++scan) map.InsertRays(FloorStrip());
+  // A foot (a box 0.1 m high) at x = 2 m, seen for a while, then gone.
+  const Eigen::Vector3f foot(2.025f, 0.025f, 0.075f);
+  robotio::DepthRays with_foot = FloorStrip();
+  for (std::size_t i = 0; i < with_foot.ends.size(); ++i) {
+    const float x = with_foot.ends[i].x();
+    if (x >= 2.0f && x < 2.3f) {
+      // The ray meets the foot's top or front: end it at the foot's voxel layer.
+      with_foot.ends[i] = Eigen::Vector3f(2.0f + 0.01f * (x - 2.0f), 0.02f, 0.07f);
+    }
+  }
+  for (int scan = 0; scan < 10; ++scan) map.InsertRays(with_foot);
+  ASSERT_EQ(map.DynamicState(foot), VoxelState::kOccupied);
+  for (int scan = 0; scan < 10; ++scan) map.InsertRays(FloorStrip());
+  EXPECT_NE(map.DynamicState(foot), VoxelState::kOccupied);
+  EXPECT_TRUE(map.IsStaticOccupied({2.025f, 0.025f, 0.025f}));  // The floor under it.
 }
 
 TEST(DualOcTreeTest, NeverObservedVoxelsAreUnknown) {

@@ -46,10 +46,12 @@ void ReferenceInsert(DualOcTree& tree, const std::vector<robotio::DepthRays>& ra
     }
   }
   if (rules.surface_band) {
+    const octomap::key_type floor_layer = FloorLayerKey(tree);
     for (const octomap::OcTreeKey& key : hit_keys) {
+      const int top = rules.floor_plane && key[2] == floor_layer ? 0 : 1;
       for (int dx = -1; dx <= 1; ++dx) {
         for (int dy = -1; dy <= 1; ++dy) {
-          for (int dz = -1; dz <= 1; ++dz) {
+          for (int dz = -1; dz <= top; ++dz) {
             free_keys.erase(octomap::OcTreeKey(static_cast<octomap::key_type>(key[0] + dx),
                                                static_cast<octomap::key_type>(key[1] + dy),
                                                static_cast<octomap::key_type>(key[2] + dz)));

@@ -26,8 +26,9 @@ struct PointAccuracy {
   double dynamic_accuracy = 0.0;     // DA = removed dynamic / all dynamic (1 when none).
   double associated_accuracy = 0.0;  // AA = sqrt(SA * DA).
   // Dynamic points in voxels whose centre lies less than two voxels above the floor plane
-  // (z = 0 of the map), where a person's feet share the floor's voxels and its surface
-  // margin: no free observation reaches them, so they are kept however the map is updated.
+  // (z = 0 of the map), where a person's feet share the floor's voxels: the floor's own
+  // layer stays occupied however the map is updated (the layer above it is seen free
+  // again only with MappingConfig::floor_plane).
   std::uint64_t dynamic_points_near_floor = 0;
   std::uint64_t dynamic_kept_near_floor = 0;
   // DA over the dynamic points above that layer (1 when none).

@@ -50,6 +50,17 @@ struct MappingConfig {
   // Voxels next to (26-neighbourhood) a voxel hit in the same scan are not observed free in
   // that scan: the surface may lie in them within one voxel of noise and discretisation.
   bool surface_band = true;
+  // The floor is the plane z = 0 of the map frame (the base stands on it), a voxel
+  // boundary: floor points fall in the layers just below and just above it. Nothing but
+  // feet and chair legs lies in the layer above those, yet the two rules above kept it
+  // from being seen free: the margin stopped every floor ray's free space 10 cm up, and
+  // the band protected the voxels above every floor hit. A person's feet there stayed in
+  // the dynamic map wherever the person had stood; on the thesis scenarios that layer held
+  // half of the wrongly kept dynamic points. With floor_plane, a hit in the floor layers
+  // (z in [-resolution, resolution)) by a ray from higher up observes free space down to
+  // the middle of the layer above them (the trace to that voxel's centre stays above the
+  // floor layers), and the band of a hit just above the plane leaves out the voxels above.
+  bool floor_plane = true;
   // Lasting change (not in the thesis, whose Table 4.1 sends everything that appears in
   // known free space to the dynamic map for good): a voxel of free space that has stayed
   // occupied in the dynamic map is raised towards the static map by a small step per

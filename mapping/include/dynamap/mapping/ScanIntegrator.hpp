@@ -41,6 +41,9 @@ struct ScanStatistics {
 [[nodiscard]] std::optional<Eigen::Vector3f> FreeSpaceEnd(const robotio::DepthRays& rays,
                                                           std::size_t i, const UpdateRules& rules);
 
+// Key (z) of the voxel layer just above the floor plane z = 0 (MappingConfig::floor_plane).
+[[nodiscard]] octomap::key_type FloorLayerKey(const DualOcTree& tree);
+
 class ScanIntegrator {
  public:
   // `rays` are in the map frame (robotio::DepthToRays with T_map_base).
@@ -62,7 +65,8 @@ class ScanIntegrator {
 
   Block& BlockFor(const octomap::OcTreeKey& key);
   Block* FindBlock(const octomap::OcTreeKey& key);  // nullptr when the scan has no such block.
-  void ClearSurfaceBand();
+  // Every hit's 26 neighbours, but above a hit in `floor_layer` (floor_plane) none.
+  void ClearSurfaceBand(std::optional<octomap::key_type> floor_layer);
   void PrepareIndex(const octomap::OcTreeKey& min_key, const octomap::OcTreeKey& max_key);
   void UpdateTree(DualOcTree& tree, const UpdateRules& rules, ScanStatistics* stats);
 

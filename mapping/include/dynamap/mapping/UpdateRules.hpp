@@ -24,6 +24,8 @@ struct UpdateRules {
   float surface_margin_m = 0.0f;  // m, surface_margin_voxels * resolution_m.
   float min_incidence_cos = 1.0f;
   bool surface_band = false;
+  bool floor_plane = false;      // MappingConfig::floor_plane.
+  float resolution_m = 0.05f;    // m, voxel edge (the floor layers' thickness).
   // Static increment of an occupied observation of a free voxel whose dynamic channel is
   // at clamp_max (MappingConfig::persistence_observations); 0 = Table 4.1's Low.
   float persistence_step = 0.0f;
