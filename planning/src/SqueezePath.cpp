@@ -16,7 +16,7 @@ std::optional<SqueezePath> FindSqueezePath(const GridMap& map, const CostFieldCo
   squeezed.hole_margin_m = cost.hole_margin_m + (cost.robot_radius_m - squeezed.robot_radius_m);
   SqueezePath squeeze{BuildTraversalGrid(map, squeezed), {}};
   if (!squeeze.grid.Contains(robot) || squeeze.grid.Blocked(goal)) return std::nullopt;
-  if (squeeze.grid.Blocked(robot)) squeeze.grid.penalty[squeeze.grid.Index(robot)] = 10.0;
+  FreeStandingCell(squeeze.grid, robot);
   squeeze.path = AStarSearch(squeeze.grid, robot, goal);
   if (!squeeze.path.found) return std::nullopt;
   return squeeze;

@@ -27,6 +27,11 @@ TargetSelection SelectTarget(const std::vector<TargetCandidate>& candidates,
     if (!std::isfinite(c.score)) continue;
     if (DistanceM(map, c.viewpoint, robot) <= config.near_m) {
       selection.too_near.push_back(c);
+      if (current && c.kind == current->kind &&
+          (DistanceM(map, c.viewpoint, current->viewpoint) <= config.same_target_m ||
+           DistanceM(map, c.region_center, current->region_center) <= config.same_target_m)) {
+        selection.looked_from_here.push_back(c);
+      }
       continue;
     }
     if (best == nullptr || c.score > best->score) best = &c;
@@ -42,7 +47,10 @@ TargetSelection SelectTarget(const std::vector<TargetCandidate>& candidates,
       same_region = &c;
     }
   }
-  if (best == nullptr) return selection;
+  if (best == nullptr) {
+    selection.looked_from_here = selection.too_near;  // The robot stays and looks.
+    return selection;
+  }
   if (same != nullptr && best->score < config.switch_ratio * same->score) {
     // Keep driving to the same place: the goal cell stays, so the path search only repairs.
     TargetCandidate kept = *same;

@@ -48,6 +48,17 @@ TEST(GridPlanners, UnreachableGoalIsNotFound) {
   EXPECT_FALSE(dstar.Plan().found);
 }
 
+TEST(GridPlanners, TheRobotsOwnBlockedCellDoesNotWallItIn) {
+  TraversalGrid grid = FromRows({"....", ".#..", "...."});
+  EXPECT_FALSE(AStarSearch(grid, {1, 1}, {3, 1}).found);  // Inflation drawn over the robot.
+  FreeStandingCell(grid, {1, 1});
+  const GridPath out = AStarSearch(grid, {1, 1}, {3, 1});
+  ASSERT_TRUE(out.found);
+  EXPECT_DOUBLE_EQ(out.cost, 1.0 + 0.5 * kStandingCellPenalty + 1.0);  // Left at once.
+  FreeStandingCell(grid, {7, 7});  // Off the grid: nothing happens.
+  EXPECT_EQ(grid.penalty[grid.Index({1, 1})], kStandingCellPenalty);
+}
+
 TEST(GridPlanners, ProximityPenaltyMakesThePathDetour) {
   TraversalGrid grid(9, 3);
   // A costly middle row: the straight line is 8 long but costs 8·(1+5) = 48.

@@ -85,6 +85,36 @@ TEST(SelectTarget, NeverChoosesAViewpointAtTheRobotsFeet) {
                                  std::nullopt, kMap, kRobot, {});
   EXPECT_FALSE(none.chosen);
   EXPECT_EQ(none.too_near.size(), 1u);
+  EXPECT_EQ(none.looked_from_here.size(), 1u);  // Nothing else: the robot looks from here.
+}
+
+TEST(SelectTarget, AViewpointPassedOnTheWayToAnotherTargetIsNotCountedAsLookedFrom) {
+  // Seed 2 of the office: driving along the corridor to another target, the robot passed the
+  // cell from which a side room is seen through its doorway.
+  const TargetCandidate current = Candidate(TargetKind::kFrontier, {90, 50}, 1.0);
+  TargetCandidate room = Candidate(TargetKind::kFrontier, {51, 50}, 2.0);
+  room.region_center = {51, 80};
+  const auto s = SelectTarget({Candidate(TargetKind::kFrontier, {90, 50}, 1.0), room},
+                              current, kMap, kRobot, {});
+  ASSERT_TRUE(s.chosen);
+  EXPECT_EQ(s.chosen->viewpoint, (GridIndex{90, 50}));
+  ASSERT_EQ(s.too_near.size(), 1u);
+  EXPECT_TRUE(s.looked_from_here.empty());
+}
+
+TEST(SelectTarget, TheReachedCurrentTargetCountsAsLookedFrom) {
+  // Reached: the region is still there and its viewpoint moved a little, within reach.
+  const TargetCandidate current = Candidate(TargetKind::kInspection, {52, 50}, 1.0);
+  TargetCandidate again = Candidate(TargetKind::kInspection, {50, 51}, 1.0);
+  again.region_center = {52, 50};
+  const auto s = SelectTarget({again, Candidate(TargetKind::kFrontier, {20, 50}, 0.5),
+                               Candidate(TargetKind::kFrontier, {51, 51}, 0.7)},
+                              current, kMap, kRobot, {});
+  ASSERT_TRUE(s.chosen);
+  EXPECT_EQ(s.chosen->viewpoint, (GridIndex{20, 50}));
+  EXPECT_EQ(s.too_near.size(), 2u);
+  ASSERT_EQ(s.looked_from_here.size(), 1u);  // Not the frontier of another kind beside it.
+  EXPECT_EQ(s.looked_from_here[0].kind, TargetKind::kInspection);
 }
 
 TEST(SelectTarget, AReachedCurrentTargetIsNotKept) {

@@ -67,8 +67,7 @@ void PlanningWorker::PlanOnce(double now_s) {
   const planning::GridIndex robot = grid.CellAt(pose.x, pose.y);
   const planning::GridIndex home = grid.CellAt(0.0, 0.0);
   if (!grid.Contains(robot)) return;
-  // The robot stands where it stands: its own cell never blocks its way out.
-  if (traversal.Blocked(robot)) traversal.penalty[traversal.Index(robot)] = 10.0;
+  planning::FreeStandingCell(traversal, robot);
   // People are neither surfaces to inspect nor walls hiding what lies behind them: a
   // person's trace made inspection targets of its own (only the paths go round them).
   const std::vector<int>& dynamic_obstacles = projected->value->dynamic_obstacles;
@@ -97,7 +96,8 @@ void PlanningWorker::PlanOnce(double now_s) {
     return;
   }
   // Keep the current target unless another is clearly better; never one at the robot's
-  // feet (counted as failed, so an unresolvable one ends up blacklisted).
+  // feet. Such a target counts as failed only when the robot has come to look from there
+  // (so an unresolvable one ends up blacklisted), never for a robot driving past it.
   const std::optional<planning::TargetCandidate> previous = current_target_;
   // Yamauchi's nearest frontier stays the plain baseline it is compared with.
   const bool keep_dropped = config_.planning.targets.strategy != "nearest-frontier";
@@ -107,7 +107,7 @@ void PlanningWorker::PlanOnce(double now_s) {
     selection_config.near_m = ArrivedM();
     const planning::TargetSelection selection = planning::SelectTarget(
         decision.candidates, current_target_, grid, robot, selection_config);
-    for (const auto& near : selection.too_near) targets_.ReportFailure(near, now_s);
+    for (const auto& looked : selection.looked_from_here) targets_.ReportFailure(looked, now_s);
     if (!selection.chosen) {
       spdlog::debug("t {:.1f} s: all {} candidates at the robot's feet", now_s,
                     selection.too_near.size());
@@ -157,7 +157,7 @@ void PlanningWorker::PlanOnce(double now_s) {
     std::optional<planning::TraversalGrid> passable;
     if (!dynamic_obstacles.empty()) {
       passable = BuildTraversalGrid(without_people, config_.planning.cost);
-      if (passable->Blocked(robot)) passable->penalty[passable->Index(robot)] = 10.0;
+      planning::FreeStandingCell(*passable, robot);
     }
     const planning::BlockedWayVerdict blocked = blocked_.Judge(
         passable ? &*passable : nullptr, robot, goal_, grid.resolution_m, now_s);

@@ -25,6 +25,12 @@ struct TargetSelectionConfig {
 struct TargetSelection {
   std::optional<TargetCandidate> chosen;   // None: every candidate is at the robot's feet.
   std::vector<TargetCandidate> too_near;   // Candidates skipped for being at the robot.
+  // Of those, the ones the robot has looked from, which count as failed: the current
+  // target (reached, and ViewpointArrival has let it turn to look), or all of them when
+  // none is left to drive to (the robot stays there). Not a viewpoint the robot passes on
+  // the way to another target: that blacklisted the office's S3 room unchosen (seed 2),
+  // its viewpoint in the corridor in front of its doorway.
+  std::vector<TargetCandidate> looked_from_here;
   bool kept_current = false;               // The current target was kept.
 };
 

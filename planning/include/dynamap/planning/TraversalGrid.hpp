@@ -75,6 +75,16 @@ struct TraversalGrid {
   }
 };
 
+// The robot stands where it stands: a blocked cell under it (inflation around a wall it
+// came close to, an obstacle drawn over it) must not wall it in. The cell becomes passable
+// with a high penalty, so paths still leave it by the shortest way. Off the grid: nothing.
+inline constexpr double kStandingCellPenalty = 10.0;
+inline void FreeStandingCell(TraversalGrid& grid, GridIndex robot) {
+  if (grid.Contains(robot) && grid.Blocked(robot)) {
+    grid.penalty[grid.Index(robot)] = kStandingCellPenalty;
+  }
+}
+
 // Octile distance: the exact cost on an empty grid without penalties, so an admissible and
 // consistent heuristic for every TraversalGrid (penalties are >= 0).
 [[nodiscard]] inline double OctileDistance(GridIndex a, GridIndex b) {
