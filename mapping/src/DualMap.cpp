@@ -45,19 +45,24 @@ ScanStatistics DualMap::InsertDepthFrames(const std::vector<const robotio::Depth
   std::vector<robotio::DepthRays> ray_sets;
   ray_sets.reserve(frames.size());
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    robotio::KinectMount limited = mounts[i];
-    limited.max_range_m = std::min(limited.max_range_m, config_.max_range_m);
-    ray_sets.push_back(robotio::DepthToRays(*frames[i], limited, T_map_base[i]));
+    ray_sets.push_back(RaysOf(*frames[i], mounts[i], T_map_base[i]));
   }
   return InsertScan(ray_sets);
+}
+
+robotio::DepthRays DualMap::RaysOf(const robotio::DepthFrame& frame,
+                                   const robotio::KinectMount& mount,
+                                   const Eigen::Isometry3d& T_map_base) const {
+  robotio::KinectMount limited = mount;
+  limited.max_range_m = std::min(mount.max_range_m, config_.max_range_m);
+  return robotio::DepthToRays(frame, limited, T_map_base, 1,
+                              config_.edge_clearance_voxels * config_.resolution_m);
 }
 
 ScanStatistics DualMap::InsertDepthFrame(const robotio::DepthFrame& frame,
                                          const robotio::KinectMount& mount,
                                          const Eigen::Isometry3d& T_map_base) {
-  robotio::KinectMount limited = mount;
-  limited.max_range_m = std::min(mount.max_range_m, config_.max_range_m);
-  return InsertRays(robotio::DepthToRays(frame, limited, T_map_base));
+  return InsertRays(RaysOf(frame, mount, T_map_base));
 }
 
 ScanStatistics DualMap::InsertPointCloud(const robotio::PointList& points_map,

@@ -26,6 +26,7 @@ MappingConfig ParseMappingConfig(robotio::ConfigNode& node) {
   node.Read("min_incidence_cos", &config.min_incidence_cos, 0.01, 1.0);
   node.Read("surface_band", &config.surface_band);
   node.Read("floor_plane", &config.floor_plane);
+  node.Read("edge_clearance_voxels", &config.edge_clearance_voxels, 0.0, 20.0);
   node.Read("persistence_observations", &config.persistence_observations, 0, 1000000);
   node.Read("voxel_filter_m", &config.voxel_filter_m, 0.005, 2.0);
   auto status = ValidateMappingConfig(config, node.file());

@@ -257,24 +257,28 @@ void ScanIntegrator::ClearSurfaceBand(std::optional<octomap::key_type> floor_lay
 std::optional<Eigen::Vector3f> FreeSpaceEnd(const robotio::DepthRays& rays, std::size_t i,
                                             const UpdateRules& rules) {
   const Eigen::Vector3f& end = rays.ends[i];
-  if (rules.floor_plane && rays.hit[i]) {
+  const Eigen::Vector3f ray = end - rays.origin;
+  const float length = ray.norm();
+  float free_length = length;
+  if (rules.floor_plane && rays.hit[i] && end.z() >= -rules.resolution_m &&
+      end.z() < rules.resolution_m && rays.origin.z() > 1.5f * rules.resolution_m) {
     // A floor hit from above: free down to the middle of the layer above the floor layers.
     const float above = 1.5f * rules.resolution_m;
     const float z0 = rays.origin.z();
-    if (end.z() >= -rules.resolution_m && end.z() < rules.resolution_m && z0 > above) {
-      return rays.origin + (end - rays.origin) * ((z0 - above) / (z0 - end.z()));
+    free_length = length * ((z0 - above) / (z0 - end.z()));
+  } else if (rules.surface_margin_m > 0.0f && !rays.incidence_cos.empty()) {
+    // A ray cut at max range knows its surface only when it carries the surface's range.
+    const float surface =
+        rays.hit[i] ? length : (rays.surface_range_m.empty() ? 0.0f : rays.surface_range_m[i]);
+    if (surface > 0.0f) {
+      free_length = surface - rules.surface_margin_m /
+                                  std::max(rays.incidence_cos[i], rules.min_incidence_cos);
     }
   }
-  if (rules.surface_margin_m <= 0.0f || rays.incidence_cos.empty()) return end;
-  const Eigen::Vector3f ray = end - rays.origin;
-  const float length = ray.norm();
-  // A ray cut at max range knows its surface only when it carries the surface's range.
-  const float surface = rays.hit[i] ? length
-                                    : (rays.surface_range_m.empty() ? 0.0f : rays.surface_range_m[i]);
-  if (!(surface > 0.0f)) return end;
-  const float margin =
-      rules.surface_margin_m / std::max(rays.incidence_cos[i], rules.min_incidence_cos);
-  const float free_length = surface - margin;
+  if (!rays.alongside_range_m.empty()) {
+    // Beside a nearer surface (a depth edge): no free space from where the ray passes it.
+    free_length = std::min(free_length, rays.alongside_range_m[i] - rules.surface_margin_m);
+  }
   if (free_length <= 0.0f) return std::nullopt;
   if (free_length >= length) return end;  // The margin lies beyond the cut end.
   return rays.origin + ray * (free_length / length);

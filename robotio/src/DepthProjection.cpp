@@ -5,6 +5,8 @@
 #include <limits>
 #include <optional>
 
+#include "dynamap/robotio/DepthEdges.hpp"
+
 namespace dynamap::robotio {
 
 PointList DepthToOrganizedPoints(const DepthFrame& frame) {
@@ -97,7 +99,7 @@ float IncidenceCos(const DepthFrame& frame, int u, int v, const Eigen::Vector3f&
 }  // namespace
 
 DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
-                      const Eigen::Isometry3d& T_target_base, int stride) {
+                      const Eigen::Isometry3d& T_target_base, int stride, double alongside_m) {
   const Intrinsics& k = frame.intrinsics;
   const Eigen::Isometry3f T = (T_target_base * mount.T_base_kinect).cast<float>();
   DepthRays rays;
@@ -105,6 +107,8 @@ DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
   const auto min_mm = static_cast<std::uint16_t>(std::max(1.0, mount.min_range_m * 1000.0));
   const double max_mm = mount.max_range_m * 1000.0;
   const float max_z = static_cast<float>(mount.max_range_m);
+  const std::vector<float> alongside =
+      alongside_m > 0.0 ? NearestDepthAlongside(frame, alongside_m, min_mm) : std::vector<float>{};
   for (int v = 0; v < frame.height; v += stride) {
     for (int u = 0; u < frame.width; u += stride) {
       const std::uint16_t d = frame.At(u, v);
@@ -121,6 +125,9 @@ DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
       rays.incidence_cos.push_back(IncidenceCos(frame, u, v, direction * measured_z, min_mm,
                                                 hit ? max_mm : kAnyRangeMm));
       rays.surface_range_m.push_back(measured_z * direction.norm());
+      if (!alongside.empty()) {
+        rays.alongside_range_m.push_back(alongside[v * frame.width + u] * direction.norm());
+      }
     }
   }
   return rays;

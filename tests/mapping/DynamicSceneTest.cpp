@@ -40,6 +40,44 @@ TEST(DynamicSceneTest, PersonWalkingThroughEndsInTheDynamicMapNotTheStaticOne) {
   EXPECT_FALSE(map.IsDynamicOccupied(wall));
 }
 
+// A door leaf 4 cm thick, first seen edge-on from a camera in its plane, then face-on from
+// the side (the office's S1 door, seen from the corridor and then from the room).
+DualMap EdgeOnThenFaceOn(double edge_clearance_voxels) {
+  MappingConfig config;
+  config.edge_clearance_voxels = edge_clearance_voxels;
+  DualMap map{config};
+  testing::SyntheticScene scene;
+  scene.boxes = {{{1.0f, 0.32f, -0.5f}, {2.0f, 0.36f, 1.0f}}};
+  const robotio::Intrinsics k = robotio::Intrinsics{}.Scaled(160, 120);
+  const robotio::KinectMount mount = testing::LevelMount(k);
+  const Eigen::Vector3f in_plane(0.0f, 0.34f, 0.3f);
+  const Eigen::Vector3f beside(0.2f, 1.3f, 0.3f);
+  for (int scan = 0; scan < 10; ++scan) {
+    map.InsertDepthFrame(testing::RenderDepth(scene, in_plane, 0.0f, k), mount,
+                         testing::BasePose(in_plane, 0.0f));
+  }
+  for (int scan = 0; scan < 10; ++scan) {
+    map.InsertDepthFrame(testing::RenderDepth(scene, beside, -0.6f, k), mount,
+                         testing::BasePose(beside, -0.6f));
+  }
+  return map;
+}
+
+TEST(DynamicSceneTest, AThinLeafSeenEdgeOnStaysInTheStaticMap) {
+  const DualMap map = EdgeOnThenFaceOn(1.0);
+  // The voxel holding the leaf's far face (y = 0.36) half-way along it.
+  const Eigen::Vector3f leaf(1.52f, 0.37f, 0.32f);
+  EXPECT_TRUE(map.IsStaticOccupied(leaf));
+  EXPECT_FALSE(map.IsDynamicOccupied(leaf));
+}
+
+TEST(DynamicSceneTest, WithoutTheEdgeClearanceRaysAlongAThinLeafSendItToTheDynamicMap) {
+  const DualMap map = EdgeOnThenFaceOn(0.0);
+  const Eigen::Vector3f leaf(1.52f, 0.37f, 0.32f);
+  EXPECT_FALSE(map.IsStaticOccupied(leaf));
+  EXPECT_TRUE(map.IsDynamicOccupied(leaf));
+}
+
 TEST(DynamicSceneTest, RegularUpdateKeepsThePersonInTheMap) {
   const DualMap map = WalkThrough(UpdateMode::kRegular);
   EXPECT_TRUE(map.IsStaticOccupied({1.62f, 0.42f, 0.32f}));

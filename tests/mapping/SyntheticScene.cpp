@@ -22,7 +22,61 @@ float HitBox(const Box& box, const Eigen::Vector3f& o, const Eigen::Vector3f& d)
   return t_near <= t_far && t_near > 0.0f ? t_near : std::numeric_limits<float>::max();
 }
 
+// Ray parameter of the nearest surface along o + t d, max() when none.
+float Nearest(const SyntheticScene& scene, const Eigen::Vector3f& o, const Eigen::Vector3f& d) {
+  float t = std::numeric_limits<float>::max();
+  if (d.x() > 1e-6f) t = std::min(t, (scene.wall_x - o.x()) / d.x());
+  if (d.z() < -1e-6f) t = std::min(t, (scene.floor_z - o.z()) / d.z());
+  for (const Box& box : scene.boxes) t = std::min(t, HitBox(box, o, d));
+  return t;
+}
+
+// Optical frame (x right, y down, z forward) → body frame (x forward, y left, z up).
+Eigen::Matrix3d OpticalToBody() {
+  Eigen::Matrix3d r;
+  r << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+  return r;
+}
+
 }  // namespace
+
+robotio::DepthFrame RenderDepth(const SyntheticScene& scene, const Eigen::Vector3f& origin,
+                                float yaw, const robotio::Intrinsics& intrinsics) {
+  robotio::DepthFrame frame;
+  frame.width = intrinsics.width;
+  frame.height = intrinsics.height;
+  frame.intrinsics = intrinsics;
+  frame.depth_mm.assign(static_cast<std::size_t>(frame.width) * frame.height, 0);
+  const Eigen::Matrix3f R =
+      (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * OpticalToBody())
+          .cast<float>();
+  for (int v = 0; v < frame.height; ++v) {
+    for (int u = 0; u < frame.width; ++u) {
+      // With the optical z component 1, the ray parameter is the z-depth.
+      const Eigen::Vector3f d = R * Eigen::Vector3f(static_cast<float>((u - intrinsics.cx) / intrinsics.fx),
+                                                    static_cast<float>((v - intrinsics.cy) / intrinsics.fy), 1.0f);
+      const float t = Nearest(scene, origin, d);
+      if (t < 60.0f) frame.depth_mm[v * frame.width + u] = static_cast<std::uint16_t>(std::lround(t * 1000.0f));
+    }
+  }
+  return frame;
+}
+
+robotio::KinectMount LevelMount(const robotio::Intrinsics& intrinsics) {
+  robotio::KinectMount mount;
+  mount.intrinsics = intrinsics;
+  mount.T_base_kinect.linear() = OpticalToBody();
+  mount.min_range_m = 0.3;
+  mount.max_range_m = 8.0;
+  return mount;
+}
+
+Eigen::Isometry3d BasePose(const Eigen::Vector3f& origin, float yaw) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = origin.cast<double>();
+  T.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return T;
+}
 
 robotio::DepthRays CastScan(const SyntheticScene& scene, const Eigen::Vector3f& origin,
                             float max_range, float step_deg) {
@@ -34,10 +88,7 @@ robotio::DepthRays CastScan(const SyntheticScene& scene, const Eigen::Vector3f& 
       const Eigen::Vector3f d(std::cos(pitch * kDeg) * std::cos(yaw * kDeg),
                               std::cos(pitch * kDeg) * std::sin(yaw * kDeg),
                               std::sin(pitch * kDeg));
-      float t = std::numeric_limits<float>::max();
-      if (d.x() > 1e-6f) t = std::min(t, (scene.wall_x - origin.x()) / d.x());
-      if (d.z() < -1e-6f) t = std::min(t, (scene.floor_z - origin.z()) / d.z());
-      for (const Box& box : scene.boxes) t = std::min(t, HitBox(box, origin, d));
+      const float t = Nearest(scene, origin, d);
       const bool hit = t <= max_range;
       rays.ends.push_back(origin + d * (hit ? t : max_range));
       rays.hit.push_back(hit);

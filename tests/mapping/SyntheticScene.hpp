@@ -3,9 +3,12 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <vector>
 
+#include "dynamap/robotio/DepthFrame.hpp"
 #include "dynamap/robotio/DepthProjection.hpp"
+#include "dynamap/robotio/Rig.hpp"
 
 namespace dynamap::mapping::testing {
 
@@ -24,5 +27,14 @@ struct SyntheticScene {
 // ray ends at the nearest surface, or is cut at `max_range` with no hit.
 robotio::DepthRays CastScan(const SyntheticScene& scene, const Eigen::Vector3f& origin,
                             float max_range, float step_deg = 0.5f);
+
+// A level camera at `origin` looking along `yaw` (rad, about z): the scene as its depth
+// image of `intrinsics` (z-depth in mm, 0 where nothing is hit).
+robotio::DepthFrame RenderDepth(const SyntheticScene& scene, const Eigen::Vector3f& origin,
+                                float yaw, const robotio::Intrinsics& intrinsics);
+// The pose of that camera as RenderDepth's frame is inserted: a mount with the optical
+// frame level and forward at the base, and the base at `origin` turned by `yaw`.
+robotio::KinectMount LevelMount(const robotio::Intrinsics& intrinsics);
+Eigen::Isometry3d BasePose(const Eigen::Vector3f& origin, float yaw);
 
 }  // namespace dynamap::mapping::testing

@@ -25,7 +25,12 @@ class DualMap {
   // Takes over a loaded tree (MapFiles); the config's resolution is replaced by the tree's.
   DualMap(std::unique_ptr<DualOcTree> tree, const MappingConfig& config);
 
-  // One scan already as rays in the map frame (robotio::DepthToRays with T_map_base).
+  // The rays of a depth frame taken at base pose T_map_base as this map inserts them: max
+  // range the smaller of the mount's and the config's, edge clearance from the config.
+  [[nodiscard]] robotio::DepthRays RaysOf(const robotio::DepthFrame& frame,
+                                          const robotio::KinectMount& mount,
+                                          const Eigen::Isometry3d& T_map_base) const;
+  // One scan already as rays in the map frame (RaysOf, or robotio::DepthToRays).
   ScanStatistics InsertRays(const robotio::DepthRays& rays);
   // One scan seen from several origins: both Kinects of one instant, each voxel updated
   // once (ScanIntegrator). Rays in the map frame.

@@ -61,6 +61,14 @@ struct MappingConfig {
   // the middle of the layer above them (the trace to that voxel's centre stays above the
   // floor layers), and the band of a hit just above the plane leaves out the voxels above.
   bool floor_plane = true;
+  // A ray beside a nearer surface, at a depth edge, observes no free space from where it
+  // comes within surface_margin_voxels of that surface's depth: the rays just beside an
+  // outline run through the voxels holding its rim. A thin object seen edge-on is all rim:
+  // S1's open door leaf (4 cm) in the office, crossed by such rays from the corridor before
+  // any ray hit it, went to the dynamic map (Table 4.1) and held most of the static points
+  // the missions lost. "Beside" is within this many voxels of the ray, measured across it
+  // (robotio::NearestDepthAlongside); 0 = off.
+  double edge_clearance_voxels = 1.0;
   // Lasting change (not in the thesis, whose Table 4.1 sends everything that appears in
   // known free space to the dynamic map for good): a voxel of free space that has stayed
   // occupied in the dynamic map is raised towards the static map by a small step per

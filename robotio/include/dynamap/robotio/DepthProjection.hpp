@@ -37,8 +37,13 @@ struct DepthRays {
   // Per ray, m from the origin to the measured surface: the end's distance for a hit,
   // farther for a ray cut at max range (its surface lies beyond). Empty with incidence_cos.
   std::vector<float> surface_range_m;
+  // Per ray, m from the origin to where the ray comes within `alongside_m` of the nearest
+  // surface measured beside it, its own included (NearestDepthAlongside, along the ray).
+  // Empty when DepthToRays was given no `alongside_m`.
+  std::vector<float> alongside_range_m;
 };
 [[nodiscard]] DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
-                                    const Eigen::Isometry3d& T_target_base, int stride = 1);
+                                    const Eigen::Isometry3d& T_target_base, int stride = 1,
+                                    double alongside_m = 0.0);
 
 }  // namespace dynamap::robotio
