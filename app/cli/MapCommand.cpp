@@ -164,7 +164,11 @@ std::optional<robotio::PointList> SurfaceSamples(const robotio::RecordingReader&
                                                  double spacing_m) {
   if (reader.meta().world.empty()) return std::nullopt;
   auto world = robotio::sim::LoadWorld(reader.meta().world);
-  if (!world) FailCommand(kCommand, world.error().message);
+  if (!world) {
+    FailCommand(kCommand, reader.dir() + ": the world it was recorded in (its meta.yaml "
+                          "`world`, needed to score the map) cannot be loaded: " +
+                              world.error().message);
+  }
   if (reader.meta().duration_s > 0.0) world->duration_s = reader.meta().duration_s;
   return robotio::sim::SampleStaticSurfaces(*world, spacing_m);
 }
@@ -215,6 +219,9 @@ void RunMap(const MapOptions& o) {
                                           : mapping::UpdateMode::kDynamic;
   }
   Check(mapping::ValidateMappingConfig(config, "command line"));
+  // Loaded first: a world that cannot be loaded stops the command before the mapping.
+  const std::optional<robotio::PointList> surface_samples =
+      SurfaceSamples(reader, config.resolution_m / 2.0);
   // With --poses slam a SLAM pass over the recording estimates the pose of every frame
   // (its own dual map steers the dynamic-point filter); the map below is then built from
   // those poses like from any other pose source.
@@ -248,7 +255,7 @@ void RunMap(const MapOptions& o) {
       mount.max_range_m = std::min(mount.max_range_m, config.max_range_m);
       const Eigen::Isometry3d T_map_base = PoseAtStamp(poses, frame->stamp_ns);
       t = Clock::now();
-      rays.push_back(robotio::DepthToRays(*frame, mount, T_map_base));
+      rays.push_back(map.RaysOf(*frame, mount, T_map_base));
       project_s += Seconds(t);
       scan_frames.push_back(std::move(*frame));
       mounts.push_back(mount);
@@ -325,8 +332,9 @@ void RunMap(const MapOptions& o) {
     report["static_accuracy_above_floor"] = a.static_accuracy_above_floor;
     report["evaluation_pixel_stride"] = o.eval_stride;
   }
-  if (const auto samples = SurfaceSamples(reader, config.resolution_m / 2.0)) {
-    const mapping::SurfaceAccuracy s = mapping::EvaluateStaticSurfaces(map.tree(), *samples);
+  if (surface_samples) {
+    const mapping::SurfaceAccuracy s =
+        mapping::EvaluateStaticSurfaces(map.tree(), *surface_samples);
     report["static_map_precision"] = s.static_map_precision;
     report["static_map_completeness"] = s.static_map_completeness;
   }

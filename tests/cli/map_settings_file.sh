@@ -1,7 +1,7 @@
 #!/bin/sh
 # dynamap map --mapping FILE: map settings from a file over the defaults, the command
 # line's --resolution winning, both in report.json; a misspelt key is an error naming the
-# file and the key.
+# file and the key; a recording whose world is gone stops before the mapping.
 # Usage: map_settings_file.sh DYNAMAP RESOURCES_DIR SCRATCH_DIR
 set -eu
 dynamap="$1"; resources="$2"; scratch="$3"
@@ -23,3 +23,10 @@ printf 'mapping:\n  persistence_observation: 450\n' > "$scratch/bad_mapping.yaml
   "$dynamap" map --log "$scratch/rec" --out "$scratch/map2" --poses groundtruth \
   --mapping "$scratch/bad_mapping.yaml"
 [ ! -e "$scratch/map2/report.json" ] || { echo "a report was written after the error" >&2; exit 1; }
+
+# A recording whose world cannot be found stops before the mapping, naming the recording.
+cp -r "$scratch/rec" "$scratch/rec-lost-world"
+sed -i 's#^world: .*#world: /nonexistent/office.yaml#' "$scratch/rec-lost-world/meta.yaml"
+"$(dirname "$0")/expect_failure.sh" 2 "rec-lost-world: the world it was recorded in" \
+  "$dynamap" map --log "$scratch/rec-lost-world" --out "$scratch/map3" --poses groundtruth
+[ ! -e "$scratch/map3/map.ot" ] || { echo "the map was made before the error" >&2; exit 1; }
