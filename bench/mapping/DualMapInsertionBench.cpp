@@ -1,6 +1,7 @@
 // Scans per second of stock octomap::OcTree::insertPointCloud (discretize on) and of the
 // dual map's batched update on the same recorded frames (both Kinects, ground-truth poses),
-// in one run. Usage: bench_dual_map --log DIR [--frames N] [--resolution M] [--max-range M]
+// in one run, and the time to turn a depth frame into rays.
+// Usage: bench_dual_map --log DIR [--frames N] [--resolution M] [--max-range M]
 #include <octomap/OcTree.h>
 
 #include <chrono>
@@ -21,6 +22,8 @@ using dynamap::robotio::PointList;
 struct Frame {
   PointList points_map;        // Valid points of the frame in the map frame.
   Eigen::Vector3f origin_map;  // Kinect centre in the map frame.
+  dynamap::robotio::DepthFrame depth;
+  Eigen::Isometry3d T_map_base = Eigen::Isometry3d::Identity();
 };
 
 Eigen::Isometry3d PoseAt(const dynamap::robotio::Trajectory& trajectory, std::int64_t stamp) {
@@ -76,6 +79,8 @@ int main(int argc, char** argv) {
       frame.points_map.push_back(T * p);
     }
     points += frame.points_map.size();
+    frame.T_map_base = PoseAt(reader->ground_truth(), depth->stamp_ns);
+    frame.depth = std::move(*depth);
     frames.push_back(std::move(frame));
   }
   if (frames.empty()) {
@@ -105,6 +110,21 @@ int main(int argc, char** argv) {
   for (const Frame& frame : frames) dual.InsertPointCloud(frame.points_map, frame.origin_map);
   const double dual_s = SecondsSince(start);
 
+  // Depth frames to rays as the map inserts them, without and with the edge clearance
+  // (MappingConfig::edge_clearance_voxels, one voxel).
+  double rays_s[2] = {0.0, 0.0};
+  std::size_t checksum = 0;
+  for (int with_edges = 0; with_edges < 2; ++with_edges) {
+    start = std::chrono::steady_clock::now();
+    for (const Frame& frame : frames) {
+      const auto& mount = reader->rig().kinects[static_cast<std::size_t>(frame.depth.sensor_id)];
+      checksum += dynamap::robotio::DepthToRays(frame.depth, mount, frame.T_map_base, 1,
+                                                with_edges ? resolution : 0.0)
+                      .ends.size();
+    }
+    rays_s[with_edges] = SecondsSince(start);
+  }
+
   const double n = static_cast<double>(frames.size());
   std::printf("frames (scans)        %zu (avg %.0f points)\n", frames.size(),
               static_cast<double>(points) / n);
@@ -114,5 +134,7 @@ int main(int argc, char** argv) {
   std::printf("dual map              %.1f scans/s (%.2f ms/scan, %zu nodes)\n", n / dual_s,
               1e3 * dual_s / n, dual.tree().size());
   std::printf("ratio dual / stock    %.2fx\n", stock_s / dual_s);
+  std::printf("depth to rays         %.2f ms/frame, with edge clearance %.2f ms/frame (%zu rays)\n",
+              1e3 * rays_s[0] / n, 1e3 * rays_s[1] / n, checksum / 2);
   return 0;
 }
