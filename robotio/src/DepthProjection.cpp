@@ -109,6 +109,13 @@ DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
   const float max_z = static_cast<float>(mount.max_range_m);
   const std::vector<float> alongside =
       alongside_m > 0.0 ? NearestDepthAlongside(frame, alongside_m, min_mm) : std::vector<float>{};
+  const std::size_t most = static_cast<std::size_t>((frame.width + stride - 1) / stride) *
+                          static_cast<std::size_t>((frame.height + stride - 1) / stride);
+  rays.ends.reserve(most);
+  rays.hit.reserve(most);
+  rays.incidence_cos.reserve(most);
+  rays.surface_range_m.reserve(most);
+  if (!alongside.empty()) rays.alongside_range_m.reserve(most);
   for (int v = 0; v < frame.height; v += stride) {
     for (int u = 0; u < frame.width; u += stride) {
       const std::uint16_t d = frame.At(u, v);
