@@ -16,6 +16,7 @@
 #include "cli/ProgressLine.hpp"
 #include "dynamap/app/runtime/MissionRuntime.hpp"
 #include "dynamap/app/runtime/RobotSources.hpp"
+#include "dynamap/mapping/MappingConfig.hpp"
 #include "dynamap/mapping/SlamLoop.hpp"
 #include "dynamap/planning/PlanningConfig.hpp"
 
@@ -29,6 +30,7 @@ struct ExploreOptions {
   std::string robot = ResourcePath("robots/segway_rmp50.yaml");
   std::string planning;  // Planning settings over the defaults; "" = defaults.
   std::string slam;      // SLAM settings over the defaults (--poses slam); "" = defaults.
+  std::string mapping;   // Map settings over the defaults; "" = defaults.
   std::string out;
   std::uint64_t seed = 1;
   double max_time_s = 1200.0;
@@ -77,6 +79,11 @@ runtime::MissionConfig ConfigFor(const ExploreOptions& options) {
     auto planning = planning::LoadPlanningConfig(options.planning);
     if (!planning) FailCommand("explore", planning.error().message);
     config.planning = *planning;
+  }
+  if (!options.mapping.empty()) {
+    auto loaded = mapping::LoadMappingConfig(options.mapping);
+    if (!loaded) FailCommand("explore", loaded.error().message);
+    config.mapping = *loaded;
   }
   if (!options.slam.empty()) {
     auto slam = mapping::LoadSlamConfig(options.slam);
@@ -217,6 +224,10 @@ void RegisterExploreCommand(CLI::App& app) {
   cmd->add_option("--slam", options->slam,
                   "SLAM settings (YAML, the keys of mapping::SlamConfig) over the defaults, "
                   "as for dynamap map --slam")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--mapping", options->mapping,
+                  "Map settings (YAML under 'mapping:' with the keys of mapping::MappingConfig, "
+                  "e.g. 'edge_clearance_voxels: 1') over the defaults, as for dynamap map")
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", options->out, "Output folder (default: a new runs/explore-* folder)");
   cmd->add_option("--seed", options->seed, "Simulator seed")->excludes(device)->excludes(replay);

@@ -23,26 +23,29 @@ TargetSelection SelectTarget(const std::vector<TargetCandidate>& candidates,
   // A current target whose viewpoint the robot has reached is done, not kept.
   const bool current_open =
       current && DistanceM(map, current->viewpoint, robot) > config.near_m;
+  // The current target, re-scored: same kind, its viewpoint or its region centre near.
+  const auto same_viewpoint = [&](const TargetCandidate& c) {
+    return current && c.kind == current->kind &&
+           DistanceM(map, c.viewpoint, current->viewpoint) <= config.same_target_m;
+  };
+  const auto same_region_center = [&](const TargetCandidate& c) {
+    return current && c.kind == current->kind &&
+           DistanceM(map, c.region_center, current->region_center) <= config.same_target_m;
+  };
   for (const TargetCandidate& c : candidates) {
     if (!std::isfinite(c.score)) continue;
     if (DistanceM(map, c.viewpoint, robot) <= config.near_m) {
       selection.too_near.push_back(c);
-      if (current && c.kind == current->kind &&
-          (DistanceM(map, c.viewpoint, current->viewpoint) <= config.same_target_m ||
-           DistanceM(map, c.region_center, current->region_center) <= config.same_target_m)) {
-        selection.looked_from_here.push_back(c);
-      }
+      if (same_viewpoint(c) || same_region_center(c)) selection.looked_from_here.push_back(c);
       continue;
     }
     if (best == nullptr || c.score > best->score) best = &c;
-    if (current_open && c.kind == current->kind &&
-        DistanceM(map, c.viewpoint, current->viewpoint) <= config.same_target_m &&
+    if (current_open && same_viewpoint(c) &&
         (same == nullptr || DistanceM(map, c.viewpoint, current->viewpoint) <
                                 DistanceM(map, same->viewpoint, current->viewpoint))) {
       same = &c;
     }
-    if (current_open && c.kind == current->kind &&
-        DistanceM(map, c.region_center, current->region_center) <= config.same_target_m &&
+    if (current_open && same_region_center(c) &&
         (same_region == nullptr || c.score > same_region->score)) {
       same_region = &c;
     }

@@ -31,13 +31,6 @@ float Nearest(const SyntheticScene& scene, const Eigen::Vector3f& o, const Eigen
   return t;
 }
 
-// Optical frame (x right, y down, z forward) → body frame (x forward, y left, z up).
-Eigen::Matrix3d OpticalToBody() {
-  Eigen::Matrix3d r;
-  r << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  return r;
-}
-
 }  // namespace
 
 robotio::DepthFrame RenderDepth(const SyntheticScene& scene, const Eigen::Vector3f& origin,
@@ -47,16 +40,19 @@ robotio::DepthFrame RenderDepth(const SyntheticScene& scene, const Eigen::Vector
   frame.height = intrinsics.height;
   frame.intrinsics = intrinsics;
   frame.depth_mm.assign(static_cast<std::size_t>(frame.width) * frame.height, 0);
-  const Eigen::Matrix3f R =
-      (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * OpticalToBody())
-          .cast<float>();
+  const Eigen::Matrix3f R = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
+                             robotio::BodyFromOptical())
+                                .cast<float>();
   for (int v = 0; v < frame.height; ++v) {
     for (int u = 0; u < frame.width; ++u) {
       // With the optical z component 1, the ray parameter is the z-depth.
-      const Eigen::Vector3f d = R * Eigen::Vector3f(static_cast<float>((u - intrinsics.cx) / intrinsics.fx),
-                                                    static_cast<float>((v - intrinsics.cy) / intrinsics.fy), 1.0f);
+      const Eigen::Vector3f d =
+          R * Eigen::Vector3f(static_cast<float>((u - intrinsics.cx) / intrinsics.fx),
+                              static_cast<float>((v - intrinsics.cy) / intrinsics.fy), 1.0f);
       const float t = Nearest(scene, origin, d);
-      if (t < 60.0f) frame.depth_mm[v * frame.width + u] = static_cast<std::uint16_t>(std::lround(t * 1000.0f));
+      if (t < 60.0f) {
+        frame.depth_mm[v * frame.width + u] = static_cast<std::uint16_t>(std::lround(t * 1000.0f));
+      }
     }
   }
   return frame;
@@ -65,7 +61,7 @@ robotio::DepthFrame RenderDepth(const SyntheticScene& scene, const Eigen::Vector
 robotio::KinectMount LevelMount(const robotio::Intrinsics& intrinsics) {
   robotio::KinectMount mount;
   mount.intrinsics = intrinsics;
-  mount.T_base_kinect.linear() = OpticalToBody();
+  mount.T_base_kinect.linear() = robotio::BodyFromOptical();
   mount.min_range_m = 0.3;
   mount.max_range_m = 8.0;
   return mount;

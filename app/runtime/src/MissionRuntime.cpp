@@ -130,7 +130,9 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Prepare(
     meta.source = runtime->world_ ? "simulator" : "hardware";
     // Absolute, as `dynamap record` writes it: `dynamap map` scores the recording against
     // its world from whatever folder it is run in.
-    if (!config.world_file.empty()) meta.world = std::filesystem::absolute(config.world_file).string();
+    if (!config.world_file.empty()) {
+      meta.world = std::filesystem::absolute(config.world_file).string();
+    }
     meta.seed = config.seed;
     meta.duration_s = config.max_time_s;
     auto writer = robotio::RecordingWriter::Create(config.out_dir + "/recording", *rig, meta);
