@@ -275,7 +275,11 @@ std::optional<Eigen::Vector3f> FreeSpaceEnd(const robotio::DepthRays& rays, std:
                                   std::max(rays.incidence_cos[i], rules.min_incidence_cos);
     }
   }
-  if (!rays.alongside_range_m.empty()) {
+  // A ray ending below the floor layers passed over a hole's edge (a stair pit): the floor
+  // beside it is that edge, and the free space it shows below the floor is what marks the
+  // hole for the planner, so the depth-edge rule leaves it alone.
+  const bool into_hole = rules.floor_plane && end.z() < -rules.resolution_m;
+  if (!rays.alongside_range_m.empty() && !into_hole) {
     // Beside a nearer surface (a depth edge): no free space from where the ray passes it.
     free_length = std::min(free_length, rays.alongside_range_m[i] - rules.surface_margin_m);
   }

@@ -16,7 +16,9 @@ double DistanceToKnownObstacle(const GridMap& map, double x_m, double y_m, doubl
   for (int y = c.y - r; y <= c.y + r; ++y) {
     for (int x = c.x - r; x <= c.x + r; ++x) {
       const GridIndex n{x, y};
-      if (!map.Contains(n) || map.At(n) != CellState::kObstacle) continue;
+      if (!map.Contains(n)) continue;
+      const CellState state = map.At(n);
+      if (state != CellState::kObstacle && state != CellState::kHole) continue;
       // The surface that made the cell an obstacle lies anywhere in it: its centre is the
       // unbiased estimate (the nearest edge would narrow every doorway by a cell per side).
       best = std::min(best, std::hypot(map.CenterX(x) - x_m, map.CenterY(y) - y_m));

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "ReferenceIntegrator.hpp"
@@ -8,6 +9,8 @@
 #include "ThesisRuleConfig.hpp"
 #include "dynamap/mapping/DualMap.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
+#include "dynamap/mapping/ScanIntegrator.hpp"
+#include "dynamap/mapping/UpdateRules.hpp"
 
 namespace dynamap::mapping {
 namespace {
@@ -279,6 +282,29 @@ DualMap MapWithHitFloorVoxel(const MappingConfig& config) {
   down.incidence_cos = {1.0f};
   map.InsertRays(down);
   return map;
+}
+
+TEST(DualOcTreeTest, EdgeClearanceSparesRaysThatPassOverAHolesEdgeIntoIt) {
+  MappingConfig config;
+  config.edge_clearance_voxels = 1.0;
+  const UpdateRules rules = UpdateRules::FromConfig(config);
+  // Both rays pass 1.2 m from the origin beside a nearer surface (the floor at a pit's edge
+  // or a door post). One ends below the floor, in the pit: it keeps its free space, which
+  // is what shows the planner the hole. The other ends on a wall behind the post and is cut
+  // the surface margin before the post.
+  robotio::DepthRays rays;
+  rays.origin = {0.0f, 0.0f, 0.6f};
+  rays.ends = {{2.0f, 0.0f, -0.6f}, {2.0f, 0.0f, 0.3f}};
+  rays.hit = {true, true};
+  rays.incidence_cos = {1.0f, 1.0f};
+  rays.surface_range_m = {(rays.ends[0] - rays.origin).norm(), (rays.ends[1] - rays.origin).norm()};
+  rays.alongside_range_m = {1.2f, 1.2f};
+  const std::optional<Eigen::Vector3f> into_pit = FreeSpaceEnd(rays, 0, rules);
+  ASSERT_TRUE(into_pit.has_value());
+  EXPECT_LT(into_pit->z(), -0.5f);
+  const std::optional<Eigen::Vector3f> past_post = FreeSpaceEnd(rays, 1, rules);
+  ASSERT_TRUE(past_post.has_value());
+  EXPECT_NEAR((*past_post - rays.origin).norm(), 1.2f - rules.surface_margin_m, 1e-5f);
 }
 
 TEST(DualOcTreeTest, GrazingRaysDoNotClearTheFloorTheySkim) {

@@ -56,5 +56,18 @@ TEST(DrivesIntoKnownObstacle, LetsTheFootprintThroughADoorwayItFits) {
       DrivesIntoKnownObstacle(map, {1.96, 1.8, M_PI / 2 + 0.8}, {0, 0.3, 0.0}, 0.36, 0.5));
 }
 
+TEST(DrivesIntoKnownObstacle, RefusesToDriveOverTheEdgeOfAHole) {
+  // A stair pit's corner: hole cells at x, y >= 2 m. Driving diagonally past it with the
+  // footprint about to reach it is refused, driving along its edge at a distance is not.
+  GridMap map(80, 80, 0.05, CellState::kNavigable);
+  for (int y = 40; y < 80; ++y) {
+    for (int x = 40; x < 80; ++x) map.Set({x, y}, CellState::kHole);
+  }
+  EXPECT_NEAR(DistanceToKnownObstacle(map, 1.5, 2.025, 1.0), 0.525, 1e-9);
+  EXPECT_TRUE(
+      DrivesIntoKnownObstacle(map, {1.7, 1.7, M_PI / 4}, {0, 0.3, 0.0}, 0.36, 0.5));
+  EXPECT_FALSE(DrivesIntoKnownObstacle(map, {1.5, 2.5, M_PI / 2}, {0, 0.3, 0.0}, 0.36, 0.5));
+}
+
 }  // namespace
 }  // namespace dynamap::planning

@@ -40,7 +40,9 @@ planning::GridMap PlanningWorker::PrepareGrid(const planning::GridMap& seen,
   planning::GridMap grid = seen;
   planning::CloseFloorGaps(grid, config_.planning.projection.max_floor_gap_m);
   planning::CloseWallGaps(grid, config_.planning.projection.max_floor_gap_m);
-  planning::ExtendHolesIntoUnknown(grid, config_.planning.cost.robot_radius_m);
+  // As far as the path keeps from a hole: a pit's corner seen late is unknown, not floor.
+  planning::ExtendHolesIntoUnknown(
+      grid, config_.planning.cost.robot_radius_m + config_.planning.cost.hole_margin_m);
   planning::AssumeFloorAround(grid, 0.0, 0.0, config_.start_floor_radius_m);
   for (const robotio::Pose2D& p : mediator_.Trail()) {
     planning::AssumeFloorAround(grid, p.x, p.y, config_.known_floor_radius_m);

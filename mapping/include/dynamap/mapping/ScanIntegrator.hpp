@@ -36,8 +36,9 @@ struct ScanStatistics {
 // point surface_margin_m / max(incidence_cos, min_incidence_cos) before the surface it
 // measured (where the ray comes within surface_margin_m of the surface plane); for a ray
 // cut at max range that point when it lies before the cut end (the floor just beyond max
-// range is grazed by the ray's last decimetres). nullopt when the margin is longer than
-// the ray.
+// range is grazed by the ray's last decimetres). With `alongside_range_m`, no farther than
+// the margin before the nearest surface beside the ray, unless the ray ends below the floor
+// layers (it passed over a hole's edge). nullopt when the margin is longer than the ray.
 [[nodiscard]] std::optional<Eigen::Vector3f> FreeSpaceEnd(const robotio::DepthRays& rays,
                                                           std::size_t i, const UpdateRules& rules);
 

@@ -1,7 +1,9 @@
 // The collision guard's complement for what the Kinects cannot see: nothing nearer than
 // their 0.5 m minimum range, nothing beside or behind the base. Door posts and desk corners
 // pass out of view before the base reaches them, so while driving the known obstacles of
-// the projected map are checked around where the footprint will be shortly.
+// the projected map are checked around where the footprint will be shortly. Holes (a stair
+// pit) count as obstacles: the Kinects see no floor nearer than about 1 m, so a pit's edge
+// is never in the collision guard's view when the base reaches it.
 #pragma once
 
 #include "dynamap/planning/GridMap.hpp"
@@ -10,7 +12,7 @@
 
 namespace dynamap::planning {
 
-// Distance from (x_m, y_m) (map frame) to the nearest obstacle cell's centre within
+// Distance from (x_m, y_m) (map frame) to the nearest obstacle or hole cell's centre within
 // `search_m`, or `search_m` when there is none that near.
 [[nodiscard]] double DistanceToKnownObstacle(const GridMap& map, double x_m, double y_m,
                                              double search_m);
