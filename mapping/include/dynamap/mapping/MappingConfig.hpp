@@ -67,11 +67,10 @@ struct MappingConfig {
   // S1's open door leaf (4 cm) in the office, crossed by such rays from the corridor before
   // any ray hit it, went to the dynamic map (Table 4.1) and held most of the static points
   // the missions lost. "Beside" is within this many voxels of the ray, measured across it
-  // (robotio::NearestDepthAlongside); 0 = off. Off by default: on, an office mission's
-  // robot touched the stair hole's corner (seed 5). Rays just over the floor's edge are
-  // the ones that see free space below the floor there, and the rule stops them at the
-  // edge; so the hole's near rim likely stays unknown longer (not verified yet).
-  double edge_clearance_voxels = 0.0;
+  // (robotio::NearestDepthAlongside); 0 = off. Rays ending below the floor layers are
+  // exempt: they passed over a hole's edge, and their free space below the floor is what
+  // shows the planner the hole.
+  double edge_clearance_voxels = 1.0;
   // Lasting change (not in the thesis, whose Table 4.1 sends everything that appears in
   // known free space to the dynamic map for good): a voxel of free space that has stayed
   // occupied in the dynamic map is raised towards the static map by a small step per

@@ -17,10 +17,12 @@ struct CostFieldConfig {
                                     // lie up to half a cell beyond the surface; a larger
                                     // radius (0.38 m) closed the 0.9 m office doors, and the
                                     // map guard covers the difference.
-  double hole_margin_m = 0.15;      // m kept from a hole (a stair pit) beyond the radius: a
+  double hole_margin_m = 0.2;       // m kept from a hole (a stair pit) beyond the radius: a
                                     // wall is bumped, a pit is fallen into. Without it the
-                                    // office robot drove through the 1 m between the pit and
-                                    // a wall, and twice its footprint touched the pit's corner.
+                                    // office robot drove through the 0.9 m between the pit
+                                    // and a wall, and twice its footprint touched the pit's
+                                    // corner; with 0.15 m it came within 0.39 m of the corner
+                                    // (the path follower cuts the inside of a turn).
   double proximity_range_m = 0.5;   // m beyond the radius over which the penalty decays to 0.
   double proximity_weight = 2.0;    // Penalty at the inflated boundary (relative extra cost).
   bool unknown_is_obstacle = true;  // Unknown cells block (inflated by unknown_radius_m);
