@@ -469,7 +469,10 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
       write("static.bt", mapping::ExportBinary(tree, mapping::MapChannel::kStatic, out + "/static.bt")),
       write("dynamic.bt",
             mapping::ExportBinary(tree, mapping::MapChannel::kDynamic, out + "/dynamic.bt")),
-      write("map3d_topdown.png", mapping::WriteTopDownPng(tree, out + "/map3d_topdown.png")),
+      // A mission stopped before its first scan has no map to picture (and still a report).
+      tree.getRoot() == nullptr
+          ? robotio::Status(robotio::Ok{})
+          : write("map3d_topdown.png", mapping::WriteTopDownPng(tree, out + "/map3d_topdown.png")),
       write("trajectory.tum", robotio::WriteTumTrajectory(estimate, out + "/trajectory.tum")),
       world_ ? write("groundtruth.tum", robotio::WriteTumTrajectory(truth, out + "/groundtruth.tum"))
              : robotio::Status(robotio::Ok{}),
