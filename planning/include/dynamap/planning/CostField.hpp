@@ -22,7 +22,7 @@ struct CostFieldConfig {
                                     // office robot drove through the 0.9 m between the pit
                                     // and a wall, and twice its footprint touched the pit's
                                     // corner; with 0.15 m it came within 0.39 m of the corner
-                                    // (the path follower cuts the inside of a turn).
+                                    // (docs/RESULTS.md, "The stair pit's corner").
   double proximity_range_m = 0.5;   // m beyond the radius over which the penalty decays to 0.
   double proximity_weight = 2.0;    // Penalty at the inflated boundary (relative extra cost).
   bool unknown_is_obstacle = true;  // Unknown cells block (inflated by unknown_radius_m);

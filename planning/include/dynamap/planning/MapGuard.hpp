@@ -2,8 +2,9 @@
 // their 0.5 m minimum range, nothing beside or behind the base. Door posts and desk corners
 // pass out of view before the base reaches them, so while driving the known obstacles of
 // the projected map are checked around where the footprint will be shortly. Holes (a stair
-// pit) count as obstacles: the Kinects see no floor nearer than about 1 m, so a pit's edge
-// is never in the collision guard's view when the base reaches it.
+// pit) count as obstacles: the Kinects see no floor within robotio::FloorBlindRadius (1.25 m
+// for the shipped rig), so a pit's edge is never in the collision guard's view when the
+// base reaches it.
 #pragma once
 
 #include "dynamap/planning/GridMap.hpp"
