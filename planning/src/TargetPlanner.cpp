@@ -12,6 +12,11 @@ namespace dynamap::planning {
 
 namespace {
 
+// Viewpoints tried per region by the nearest frontier before it gives the region up, and
+// how far (m) the next one must be from those that saw too little.
+constexpr int kMaxViewpointTries = 12;
+constexpr double kWantingRadiusM = 0.3;
+
 struct Region {
   std::vector<int> cells;
   GridIndex center;  // Region cell nearest the centroid.
@@ -70,11 +75,24 @@ struct Viewpoint {
   GridIndex cell;
   double cost = kInfinity;
 };
-// The reachable cell between `min_cells` and `max_cells` from `center` that sees it and
-// has the smallest key(squared distance to the centre, cost to reach it).
+
+// Cells within `radius_cells` of a viewpoint already found wanting (it sees too little).
+struct Excluded {
+  std::vector<GridIndex> cells;
+  double radius_cells = 0.0;
+
+  [[nodiscard]] bool Contains(GridIndex c) const {
+    return std::any_of(cells.begin(), cells.end(), [&](GridIndex e) {
+      return (c.x - e.x) * (c.x - e.x) + (c.y - e.y) * (c.y - e.y) <= radius_cells * radius_cells;
+    });
+  }
+};
+
+// The reachable cell between `min_cells` and `max_cells` from `center`, not excluded, that
+// sees it and has the smallest key(squared distance to the centre, cost to reach it).
 template <typename Key>
 Viewpoint BestViewpoint(const GridMap& map, const std::vector<double>& cost_to_go, GridIndex center,
-                        double min_cells, double max_cells, Key key) {
+                        double min_cells, double max_cells, const Excluded& excluded, Key key) {
   Viewpoint best;
   double best_key = kInfinity;
   const int r = static_cast<int>(std::ceil(max_cells));
@@ -89,7 +107,7 @@ Viewpoint BestViewpoint(const GridMap& map, const std::vector<double>& cost_to_g
       const double k = key(d2, c);
       if (k >= best_key) continue;
       const GridIndex cell{x, y};
-      if (!ClearSight(map, cell, center)) continue;
+      if (!ClearSight(map, cell, center) || excluded.Contains(cell)) continue;
       best = {true, cell, c};
       best_key = k;
     }
@@ -99,17 +117,26 @@ Viewpoint BestViewpoint(const GridMap& map, const std::vector<double>& cost_to_g
 
 // The cheapest to reach.
 Viewpoint FindViewpoint(const GridMap& map, const std::vector<double>& cost_to_go, GridIndex center,
-                        double min_cells, double max_cells) {
-  return BestViewpoint(map, cost_to_go, center, min_cells, max_cells,
+                        double min_cells, double max_cells, const Excluded& excluded) {
+  return BestViewpoint(map, cost_to_go, center, min_cells, max_cells, excluded,
                        [](double, double cost) { return cost; });
 }
 
 // The nearest to the region: for a region seen only through a doorway from afar, the place
 // in front of the doorway (no cell near the region itself is reachable yet).
 Viewpoint FindNearestViewpoint(const GridMap& map, const std::vector<double>& cost_to_go,
-                               GridIndex center, double max_cells) {
-  return BestViewpoint(map, cost_to_go, center, 0.0, max_cells,
+                               GridIndex center, double max_cells, const Excluded& excluded) {
+  return BestViewpoint(map, cost_to_go, center, 0.0, max_cells, excluded,
                        [](double d2, double) { return d2; });
+}
+
+// Unknown area (m²) seen from `from` within the cone.
+double UnknownSeen(const GridMap& map, GridIndex from, const ViewCone& cone) {
+  int unknown_seen = 0;
+  for (const int i : VisibleCells(map, from, cone)) {
+    unknown_seen += map.cells[i] == CellState::kUnknown ? 1 : 0;
+  }
+  return unknown_seen * map.resolution_m * map.resolution_m;
 }
 
 // A start cell for the cost-to-go: the robot's, or the nearest free one when the robot
@@ -177,14 +204,33 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
     // Far enough to see the unseen floor beyond the frontier; nearer only where there is
     // no such place (a narrow dead end).
     const double min_view = config_.min_view_distance_m / res;
-    Viewpoint vp = FindViewpoint(map, cost_to_go, region.center, min_view,
-                                 min_view + config_.viewpoint_radius_m / res);
-    if (!vp.found && min_view > 0.0) {
-      vp = FindViewpoint(map, cost_to_go, region.center, 0.0, config_.viewpoint_radius_m / res);
-    }
-    if (!vp.found) {
-      // Seen from afar through a doorway: go as near as the known floor allows and look.
-      vp = FindNearestViewpoint(map, cost_to_go, region.center, config_.sensor_range_m / res);
+    const auto find = [&](const Excluded& excluded) {
+      Viewpoint vp = FindViewpoint(map, cost_to_go, region.center, min_view,
+                                   min_view + config_.viewpoint_radius_m / res, excluded);
+      if (!vp.found && min_view > 0.0) {
+        vp = FindViewpoint(map, cost_to_go, region.center, 0.0, config_.viewpoint_radius_m / res,
+                           excluded);
+      }
+      if (!vp.found) {
+        // Seen from afar through a doorway: go as near as the known floor allows and look.
+        vp = FindNearestViewpoint(map, cost_to_go, region.center, config_.sensor_range_m / res,
+                                  excluded);
+      }
+      return vp;
+    };
+    Excluded wanting{{}, kWantingRadiusM / res};
+    Viewpoint vp = find(wanting);
+    double gain = vp.found ? UnknownSeen(map, vp.cell, cone) : 0.0;
+    if (nearest) {
+      // The nearest frontier has no gain to weigh, so a viewpoint that sees none of the
+      // unknown beyond it (its centre seen past a door jamb, say) would be driven to, looked
+      // from and blacklisted: the cheapest viewpoint that sees enough stands in for it.
+      for (int tries = 1; vp.found && gain < config_.min_gain_m2 && tries < kMaxViewpointTries;
+           ++tries) {
+        wanting.cells.push_back(vp.cell);
+        vp = find(wanting);
+        gain = vp.found ? UnknownSeen(map, vp.cell, cone) : 0.0;
+      }
     }
     if (!vp.found) {
       ++decision.unreachable_regions;
@@ -196,14 +242,10 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
     c.region_center = region.center;
     c.region_cells = static_cast<int>(region.cells.size());
     c.path_cost_m = vp.cost * res;
-    int unknown_seen = 0;
-    for (const int i : VisibleCells(map, vp.cell, cone)) {
-      unknown_seen += map.cells[i] == CellState::kUnknown ? 1 : 0;
-    }
-    c.gain = unknown_seen * res * res;
+    c.gain = gain;
     c.score = nearest ? 1.0 / (c.path_cost_m + config_.path_cost_offset_m)
                       : c.gain / (c.path_cost_m + config_.path_cost_offset_m);
-    if (nearest || c.gain >= config_.min_gain_m2) decision.candidates.push_back(c);
+    if (c.gain >= config_.min_gain_m2) decision.candidates.push_back(c);
   }
 
   // Inspection: surfaces not yet seen from within the inspection distance.
@@ -232,7 +274,8 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
         continue;
       }
       // Well inside the inspection distance, so the surface counts once seen from there.
-      const Viewpoint vp = FindViewpoint(map, cost_to_go, region.center, 0.0, 0.8 * inspect_cells);
+      const Viewpoint vp =
+          FindViewpoint(map, cost_to_go, region.center, 0.0, 0.8 * inspect_cells, Excluded{});
       if (!vp.found) continue;
       TargetCandidate c;
       c.kind = TargetKind::kInspection;

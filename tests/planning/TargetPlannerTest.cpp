@@ -76,6 +76,35 @@ TEST(TargetPlanner, NearestFrontierStrategyTakesTheClosestRegion) {
   EXPECT_LT(d.chosen.region_center.x, 15);  // The west pocket, although it shows less.
 }
 
+TEST(TargetPlanner, NearestFrontierLooksFromWhereTheUnknownBeyondIsSeen) {
+  // A known corridor (y 10..19) with a doorway (x 40..44) through its thick north wall into
+  // an unknown room. The cheapest viewpoint that sees the doorway's centre lies down the
+  // corridor and sees the room edge-on past the jamb, hardly at all: the robot would drive
+  // there, look, see next to nothing and blacklist the room. The nearest frontier takes the
+  // cheapest viewpoint from which enough of the room is seen.
+  GridMap map(80, 60, kRes, CellState::kUnknown);
+  Fill(&map, 0, 9, 79, 22, CellState::kObstacle);
+  Fill(&map, 1, 10, 78, 19, CellState::kNavigable);
+  Fill(&map, 40, 20, 44, 22, CellState::kNavigable);  // The doorway.
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  TargetPlannerConfig config = NoInspection();
+  config.strategy = "nearest-frontier";
+  config.viewpoint_radius_m = 2.5;
+  config.min_gain_m2 = 1.0;
+  const TargetDecision d = TargetPlanner(config, kRes).Plan(map, grid, {5, 15}, {5, 15}, nullptr, 0.0);
+  ASSERT_EQ(d.kind, TargetKind::kFrontier);
+  EXPECT_GE(d.chosen.gain, 1.0);
+  EXPECT_FALSE(grid.Blocked(d.chosen.viewpoint));
+  // Asking for no gain at all gives the first viewpoint: down the corridor, seeing the
+  // room past the jamb through a ray or two.
+  config.min_gain_m2 = 0.0;
+  const TargetDecision blind =
+      TargetPlanner(config, kRes).Plan(map, grid, {5, 15}, {5, 15}, nullptr, 0.0);
+  ASSERT_EQ(blind.kind, TargetKind::kFrontier);
+  EXPECT_LT(blind.chosen.gain, 1.0);
+  EXPECT_LT(blind.chosen.viewpoint.x, d.chosen.viewpoint.x);  // The seeing one is nearer the door.
+}
+
 TEST(TargetPlanner, BlacklistedTargetsAreSkippedUntilTheyExpire) {
   const GridMap map = RoomWithOpenings();
   const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());

@@ -25,7 +25,8 @@ struct TargetPlannerConfig {
                                          // unseen side of a frontier is mostly floor, which
                                          // the Kinects see only beyond their floor blind
                                          // radius (the runtime sets it from the rig).
-  double min_gain_m2 = 0.2;              // m², frontier targets revealing less are not worth it.
+  double min_gain_m2 = 0.2;              // m², frontier targets revealing less are not worth it
+                                         // (the nearest frontier tries further viewpoints).
   double path_cost_offset_m = 1.0;       // m added to path cost in score = gain / (cost + offset),
                                          // so targets next to the robot do not win by ~1/0.
   bool inspection = true;                // Also plan inspection targets.
