@@ -204,33 +204,34 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
     // Far enough to see the unseen floor beyond the frontier; nearer only where there is
     // no such place (a narrow dead end).
     const double min_view = config_.min_view_distance_m / res;
-    const auto find = [&](const Excluded& excluded) {
-      Viewpoint vp = FindViewpoint(map, cost_to_go, region.center, min_view,
-                                   min_view + config_.viewpoint_radius_m / res, excluded);
+    Excluded wanting{{}, kWantingRadiusM / res};
+    Viewpoint vp;
+    double gain = 0.0;
+    for (int tries = 0; tries < kMaxViewpointTries; ++tries) {
+      vp = FindViewpoint(map, cost_to_go, region.center, min_view,
+                         min_view + config_.viewpoint_radius_m / res, wanting);
       if (!vp.found && min_view > 0.0) {
         vp = FindViewpoint(map, cost_to_go, region.center, 0.0, config_.viewpoint_radius_m / res,
-                           excluded);
+                           wanting);
       }
-      if (!vp.found) {
-        // Seen from afar through a doorway: go as near as the known floor allows and look.
-        vp = FindNearestViewpoint(map, cost_to_go, region.center, config_.sensor_range_m / res,
-                                  excluded);
-      }
-      return vp;
-    };
-    Excluded wanting{{}, kWantingRadiusM / res};
-    Viewpoint vp = find(wanting);
-    double gain = vp.found ? UnknownSeen(map, vp.cell, cone) : 0.0;
-    if (nearest) {
+      if (!vp.found) break;
+      gain = UnknownSeen(map, vp.cell, cone);
       // The nearest frontier has no gain to weigh, so a viewpoint that sees none of the
-      // unknown beyond it (its centre seen past a door jamb, say) would be driven to, looked
+      // unknown beyond it (the centre glimpsed past a door jamb) would be driven to, looked
       // from and blacklisted: the cheapest viewpoint that sees enough stands in for it.
-      for (int tries = 1; vp.found && gain < config_.min_gain_m2 && tries < kMaxViewpointTries;
-           ++tries) {
-        wanting.cells.push_back(vp.cell);
-        vp = find(wanting);
-        gain = vp.found ? UnknownSeen(map, vp.cell, cone) : 0.0;
-      }
+      if (!nearest || gain >= config_.min_gain_m2) break;
+      wanting.cells.push_back(vp.cell);
+      vp.found = false;
+    }
+    bool approach = false;
+    if (!vp.found) {
+      // Seen from afar through a doorway: go as near as the known floor allows and look.
+      // Standing there makes the threshold known floor (AssumeFloorAround), which opens
+      // the room, so this viewpoint is worth reaching even when it sees little itself.
+      vp = FindNearestViewpoint(map, cost_to_go, region.center, config_.sensor_range_m / res,
+                                wanting);
+      approach = vp.found;
+      gain = vp.found ? UnknownSeen(map, vp.cell, cone) : 0.0;
     }
     if (!vp.found) {
       ++decision.unreachable_regions;
@@ -245,7 +246,7 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
     c.gain = gain;
     c.score = nearest ? 1.0 / (c.path_cost_m + config_.path_cost_offset_m)
                       : c.gain / (c.path_cost_m + config_.path_cost_offset_m);
-    if (c.gain >= config_.min_gain_m2) decision.candidates.push_back(c);
+    if (c.gain >= config_.min_gain_m2 || (nearest && approach)) decision.candidates.push_back(c);
   }
 
   // Inspection: surfaces not yet seen from within the inspection distance.

@@ -256,6 +256,16 @@ TEST(TargetPlanner, ARoomSeenFromAfarThroughADoorwayIsLookedIntoFromInFrontOfIt)
   EXPECT_LE(d.chosen.viewpoint.y, 19);       // ... looked at from the corridor ...
   EXPECT_NEAR(d.chosen.viewpoint.x, 41, 3);  // ... right in front of the doorway.
   EXPECT_GT(d.chosen.gain, 0.0);
+  // The nearest frontier goes there too, even when nothing reachable sees enough of the
+  // room: standing in front of the doorway makes its threshold known floor.
+  TargetPlannerConfig nearest = NoInspection();
+  nearest.strategy = "nearest-frontier";
+  nearest.min_gain_m2 = 100.0;
+  const TargetDecision n =
+      TargetPlanner(nearest, kRes).Plan(map, grid, {10, 15}, {10, 15}, nullptr, 0.0);
+  ASSERT_EQ(n.kind, TargetKind::kFrontier);
+  EXPECT_LE(n.chosen.viewpoint.y, 19);
+  EXPECT_NEAR(n.chosen.viewpoint.x, 41, 3);
 }
 
 TEST(SurfaceCoverage, AWallThatShiftsByOneCellStaysInspected) {
