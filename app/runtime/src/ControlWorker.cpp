@@ -76,8 +76,8 @@ robotio::VelocityCommand ControlWorker::HoldAtKnownObstacles(
     const std::shared_ptr<const planning::GridMap>& map, const robotio::Pose2D& pose,
     robotio::VelocityCommand command) {
   // The Kinects see nothing within 0.5 m, beside or behind the base, and no floor within
-  // about a metre: door posts passing out of view and a stair pit's edge are checked on
-  // the map instead.
+  // robotio::FloorBlindRadius (1.25 m for the shipped rig): door posts passing out of view
+  // and a stair pit's edge are checked on the map instead.
   if (map && planning::DrivesIntoKnownObstacle(*map, pose, command,
                                                config_.guard.footprint_radius_m,
                                                config_.map_guard_s)) {
