@@ -8,13 +8,17 @@ double SqueezeRadius(const CostFieldConfig& cost, double resolution_m) {
   return cost.robot_radius_m - 0.5 * resolution_m;
 }
 
-std::optional<SqueezePath> FindSqueezePath(const GridMap& map, const CostFieldConfig& cost,
-                                           GridIndex robot, GridIndex goal) {
+TraversalGrid BuildSqueezeGrid(const GridMap& map, const CostFieldConfig& cost) {
   CostFieldConfig squeezed = cost;
   squeezed.robot_radius_m = SqueezeRadius(cost, map.resolution_m);
   // A wall is bumped, a pit is fallen into: the stair hole keeps its whole distance.
   squeezed.hole_margin_m = cost.hole_margin_m + (cost.robot_radius_m - squeezed.robot_radius_m);
-  SqueezePath squeeze{BuildTraversalGrid(map, squeezed), {}};
+  return BuildTraversalGrid(map, squeezed);
+}
+
+std::optional<SqueezePath> FindSqueezePath(const GridMap& map, const CostFieldConfig& cost,
+                                           GridIndex robot, GridIndex goal) {
+  SqueezePath squeeze{BuildSqueezeGrid(map, cost), {}};
   if (!squeeze.grid.Contains(robot) || squeeze.grid.Blocked(goal)) return std::nullopt;
   FreeStandingCell(squeeze.grid, robot);
   squeeze.path = AStarSearch(squeeze.grid, robot, goal);

@@ -179,11 +179,20 @@ TargetPlanner::TargetPlanner(TargetPlannerConfig config, double resolution_m)
 
 TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid, GridIndex robot,
                                    GridIndex home, const SurfaceCoverage* coverage,
-                                   double now_s) const {
+                                   double now_s, const TraversalGrid* squeeze) const {
   TargetDecision decision;
   const double res = map.resolution_m;
-  const std::vector<double> cost_to_go =
-      CostToGo(grid, FreeCellNear(grid, robot, static_cast<int>(std::ceil(0.5 / res))));
+  const int near_robot = static_cast<int>(std::ceil(0.5 / res));
+  const std::vector<double> cost_to_go = CostToGo(grid, FreeCellNear(grid, robot, near_robot));
+  // Costs to go on the squeeze grid, computed once a region needs them.
+  std::vector<double> squeeze_cost_to_go;
+  auto squeezed_costs = [&]() -> const std::vector<double>* {
+    if (squeeze == nullptr) return nullptr;
+    if (squeeze_cost_to_go.empty()) {
+      squeeze_cost_to_go = CostToGo(*squeeze, FreeCellNear(*squeeze, robot, near_robot));
+    }
+    return &squeeze_cost_to_go;
+  };
   const bool nearest = config_.strategy == "nearest-frontier";
 
   // Frontier pixels: navigable cells 4-adjacent to unknown (dilate unknown by a cross).
@@ -207,22 +216,26 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
     Excluded wanting{{}, kWantingRadiusM / res};
     Viewpoint vp;
     double gain = 0.0;
-    for (int tries = 0; tries < kMaxViewpointTries; ++tries) {
-      vp = FindViewpoint(map, cost_to_go, region.center, min_view,
-                         min_view + config_.viewpoint_radius_m / res, wanting);
-      if (!vp.found && min_view > 0.0) {
-        vp = FindViewpoint(map, cost_to_go, region.center, 0.0, config_.viewpoint_radius_m / res,
-                           wanting);
+    auto search = [&](const std::vector<double>& costs) {
+      for (int tries = 0; tries < kMaxViewpointTries; ++tries) {
+        vp = FindViewpoint(map, costs, region.center, min_view,
+                           min_view + config_.viewpoint_radius_m / res, wanting);
+        if (!vp.found && min_view > 0.0) {
+          vp = FindViewpoint(map, costs, region.center, 0.0, config_.viewpoint_radius_m / res,
+                             wanting);
+        }
+        if (!vp.found) return;
+        gain = UnknownSeen(map, vp.cell, cone);
+        // The nearest frontier has no gain to weigh, so a viewpoint that sees none of the
+        // unknown beyond it (the centre glimpsed past a door jamb) would be driven to, looked
+        // from and blacklisted: the cheapest viewpoint that sees enough stands in for it.
+        if (!nearest || gain >= config_.min_gain_m2) return;
+        wanting.cells.push_back(vp.cell);
+        vp.found = false;
       }
-      if (!vp.found) break;
-      gain = UnknownSeen(map, vp.cell, cone);
-      // The nearest frontier has no gain to weigh, so a viewpoint that sees none of the
-      // unknown beyond it (the centre glimpsed past a door jamb) would be driven to, looked
-      // from and blacklisted: the cheapest viewpoint that sees enough stands in for it.
-      if (!nearest || gain >= config_.min_gain_m2) break;
-      wanting.cells.push_back(vp.cell);
-      vp.found = false;
-    }
+    };
+    search(cost_to_go);
+    if (!vp.found && squeezed_costs() != nullptr) search(*squeezed_costs());
     bool approach = false;
     if (!vp.found) {
       // Seen from afar through a doorway: go as near as the known floor allows and look.
@@ -275,8 +288,12 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
         continue;
       }
       // Well inside the inspection distance, so the surface counts once seen from there.
-      const Viewpoint vp =
+      Viewpoint vp =
           FindViewpoint(map, cost_to_go, region.center, 0.0, 0.8 * inspect_cells, Excluded{});
+      if (!vp.found && squeezed_costs() != nullptr) {
+        vp = FindViewpoint(map, *squeezed_costs(), region.center, 0.0, 0.8 * inspect_cells,
+                           Excluded{});
+      }
       if (!vp.found) continue;
       TargetCandidate c;
       c.kind = TargetKind::kInspection;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "dynamap/planning/CostField.hpp"
+#include "dynamap/planning/SqueezePath.hpp"
 #include "dynamap/planning/TargetPlanner.hpp"
 #include "dynamap/planning/Visibility.hpp"
 
@@ -266,6 +267,51 @@ TEST(TargetPlanner, ARoomSeenFromAfarThroughADoorwayIsLookedIntoFromInFrontOfIt)
   ASSERT_EQ(n.kind, TargetKind::kFrontier);
   EXPECT_LE(n.chosen.viewpoint.y, 19);
   EXPECT_NEAR(n.chosen.viewpoint.x, 41, 3);
+}
+
+TEST(TargetPlanner, ARoomBehindADoorwayOnlyTheSqueezePassesIsPlannedFor) {
+  // The office's N2 (seed 2, edge clearance 1.5): a corridor (y 10..29), and north of it,
+  // through a doorway mapped 0.75 m between obstacle cell centres (x 51..64 at y = 30; the
+  // open leaf and the post), a room (x 45..70) known up to y = 70 and unknown beyond. The
+  // robot's full radius closes the doorway; the radius less half a cell does not, and the
+  // path planner squeezes through it then. Without the squeeze grid the room's frontier is
+  // only looked at from the corridor; with it the viewpoint lies in the room.
+  constexpr double kCell = 0.05;
+  GridMap map(120, 110, kCell, CellState::kUnknown);
+  Fill(&map, 0, 9, 119, 30, CellState::kObstacle);
+  Fill(&map, 1, 10, 118, 29, CellState::kNavigable);
+  Fill(&map, 44, 31, 71, 70, CellState::kObstacle);
+  Fill(&map, 45, 31, 70, 70, CellState::kNavigable);
+  Fill(&map, 51, 30, 64, 30, CellState::kNavigable);  // The doorway.
+  const CostFieldConfig cost;  // The office robot: 0.36 m.
+  const TraversalGrid grid = BuildTraversalGrid(map, cost);
+  const TraversalGrid squeeze = BuildSqueezeGrid(map, cost);
+  for (int x = 51; x <= 64; ++x) ASSERT_TRUE(grid.Blocked({x, 30}));
+  const GridIndex robot{20, 20};
+  const TargetPlanner planner(NoInspection(), kCell);
+
+  const TargetDecision without = planner.Plan(map, grid, robot, robot, nullptr, 0.0);
+  ASSERT_EQ(without.kind, TargetKind::kFrontier);
+  EXPECT_LT(without.chosen.viewpoint.y, 30);  // From the corridor, through the doorway.
+
+  const TargetDecision with = planner.Plan(map, grid, robot, robot, nullptr, 0.0, &squeeze);
+  ASSERT_EQ(with.kind, TargetKind::kFrontier);
+  EXPECT_GT(with.chosen.region_center.y, 60);
+  EXPECT_GT(with.chosen.viewpoint.y, 30);  // In the room ...
+  EXPECT_GE(with.chosen.gain, TargetPlannerConfig{}.min_gain_m2);
+  const auto path = FindSqueezePath(map, cost, robot, with.chosen.viewpoint);
+  ASSERT_TRUE(path.has_value());  // ... which the path planner reaches by squeezing.
+  EXPECT_EQ(path->path.cells.back(), with.chosen.viewpoint);
+
+  // Where the full radius has a way, the squeeze grid changes nothing.
+  GridMap open = map;
+  Fill(&open, 46, 30, 69, 30, CellState::kNavigable);
+  const TraversalGrid open_grid = BuildTraversalGrid(open, cost);
+  const TraversalGrid open_squeeze = BuildSqueezeGrid(open, cost);
+  const TargetDecision a = planner.Plan(open, open_grid, robot, robot, nullptr, 0.0);
+  const TargetDecision b = planner.Plan(open, open_grid, robot, robot, nullptr, 0.0, &open_squeeze);
+  EXPECT_EQ(a.chosen.viewpoint, b.chosen.viewpoint);
+  EXPECT_GT(a.chosen.viewpoint.y, 30);
 }
 
 TEST(SurfaceCoverage, AWallThatShiftsByOneCellStaysInspected) {

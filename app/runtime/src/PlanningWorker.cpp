@@ -77,8 +77,12 @@ void PlanningWorker::PlanOnce(double now_s) {
       dynamic_obstacles.empty() ? grid : planning::WithoutDynamicObstacles(grid, dynamic_obstacles);
   coverage_.Observe(without_people, pose);
 
+  // Where the full radius closes a doorway the robot fits through, the path squeezes
+  // (below), so what lies beyond it is worth planning for.
+  planning::TraversalGrid squeeze_grid = planning::BuildSqueezeGrid(grid, config_.planning.cost);
+  planning::FreeStandingCell(squeeze_grid, robot);
   const planning::TargetDecision decision =
-      targets_.Plan(without_people, traversal, robot, home, &coverage_, now_s);
+      targets_.Plan(without_people, traversal, robot, home, &coverage_, now_s, &squeeze_grid);
   spdlog::debug("t {:.1f} s: {} regions, {} unreachable, {} blacklisted, {} candidates -> {} ({}, {})",
                 now_s, decision.frontier_regions, decision.unreachable_regions,
                 decision.blacklisted_regions,

@@ -24,6 +24,10 @@ struct SqueezePath {
 // The robot's radius used for squeezing: `cost.robot_radius_m` less half a cell.
 [[nodiscard]] double SqueezeRadius(const CostFieldConfig& cost, double resolution_m);
 
+// `map` inflated by SqueezeRadius, with holes kept at their full distance (radius plus
+// margin).
+[[nodiscard]] TraversalGrid BuildSqueezeGrid(const GridMap& map, const CostFieldConfig& cost);
+
 // A path from `robot` to `goal` on `map` inflated by SqueezeRadius (holes keep their full
 // margin; the robot's own cell never blocks), or nothing when there is none either.
 [[nodiscard]] std::optional<SqueezePath> FindSqueezePath(const GridMap& map,

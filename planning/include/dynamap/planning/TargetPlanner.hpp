@@ -72,10 +72,13 @@ class TargetPlanner {
   TargetPlanner(TargetPlannerConfig config, double resolution_m);
 
   // `grid` is the traversal grid built from `map`; `home` the start cell; `coverage` may be
-  // null (no inspection targets then).
+  // null (no inspection targets then). `squeeze`, when given, is the map inflated by the
+  // squeeze radius (BuildSqueezeGrid): a region with no viewpoint reachable on `grid` takes
+  // one reachable on it, since the path planner squeezes where the full radius leaves no
+  // way (a doorway whose open leaf was mapped a cell thick).
   [[nodiscard]] TargetDecision Plan(const GridMap& map, const TraversalGrid& grid, GridIndex robot,
                                     GridIndex home, const SurfaceCoverage* coverage,
-                                    double now_s) const;
+                                    double now_s, const TraversalGrid* squeeze = nullptr) const;
 
   // The runtime reports that reaching `target` failed (path blocked, timeout) or that the
   // path planner found it unreachable; repeated failures blacklist the region for a while
