@@ -111,7 +111,9 @@ int main(int argc, char** argv) {
   const double dual_s = SecondsSince(start);
 
   // Depth frames to rays as the map inserts them, without and with the edge clearance
-  // (MappingConfig::edge_clearance_voxels, one voxel).
+  // (MappingConfig::edge_clearance_voxels, its default).
+  const double edge_clearance_m =
+      dynamap::mapping::MappingConfig{}.edge_clearance_voxels * resolution;
   double rays_s[2] = {0.0, 0.0};
   std::size_t checksum = 0;
   for (int with_edges = 0; with_edges < 2; ++with_edges) {
@@ -119,7 +121,7 @@ int main(int argc, char** argv) {
     for (const Frame& frame : frames) {
       const auto& mount = reader->rig().kinects[static_cast<std::size_t>(frame.depth.sensor_id)];
       checksum += dynamap::robotio::DepthToRays(frame.depth, mount, frame.T_map_base, 1,
-                                                with_edges ? resolution : 0.0)
+                                                with_edges ? edge_clearance_m : 0.0)
                       .ends.size();
     }
     rays_s[with_edges] = SecondsSince(start);
