@@ -90,8 +90,9 @@ runtime::MissionConfig ConfigFor(const ExploreOptions& options) {
     if (!slam) FailCommand("explore", slam.error().message);
     config.slam = *slam;
   }
-  config.planning.targets.strategy = options.targets == "nearest-frontier" ? "nearest-frontier"
-                                                                           : "gain";
+  // "default" keeps the planning configuration's strategy (a --planning file's, or the
+  // built-in one).
+  if (options.targets != "default") config.planning.targets.strategy = options.targets;
   return config;
 }
 
@@ -238,8 +239,11 @@ void RegisterExploreCommand(CLI::App& app) {
                   "without dropping frames")
       ->check(CLI::NonNegativeNumber)
       ->excludes(device);
-  cmd->add_option("--targets", options->targets, "Target planner")
-      ->check(CLI::IsMember({"default", "nearest-frontier"}));
+  cmd->add_option("--targets", options->targets,
+                  "Target planner: default (the planning configuration's), gain (gain over "
+                  "path cost), tour (first stop of the shortest tour through all targets) or "
+                  "nearest-frontier (Yamauchi's baseline)")
+      ->check(CLI::IsMember({"default", "gain", "tour", "nearest-frontier"}));
   cmd->add_option("--poses", options->poses, "Where frames are placed from")
       ->check(CLI::IsMember({"slam", "odometry", "groundtruth"}));
   cmd->add_option("--kinect-width", options->kinect_width,

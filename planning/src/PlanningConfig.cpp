@@ -25,7 +25,7 @@ void ReadCost(robotio::ConfigNode& n, CostFieldConfig* c) {
 }
 
 void ReadTargets(robotio::ConfigNode& n, TargetPlannerConfig* c) {
-  n.ReadChoice("strategy", &c->strategy, {"gain", "nearest-frontier"});
+  n.ReadChoice("strategy", &c->strategy, {"gain", "tour", "nearest-frontier"});
   n.Read("min_frontier_length_m", &c->min_frontier_length_m, 0.0, 10.0);
   n.Read("sensor_range_m", &c->sensor_range_m, 0.5, 20.0);
   n.Read("viewpoint_radius_m", &c->viewpoint_radius_m, 0.0, 10.0);
@@ -37,6 +37,8 @@ void ReadTargets(robotio::ConfigNode& n, TargetPlannerConfig* c) {
   n.Read("inspection_weight", &c->inspection_weight, 0.0, kHuge);
   n.Read("min_inspection_m", &c->min_inspection_m, 0.0, kHuge);
   n.Read("home_tolerance_m", &c->home_tolerance_m, 0.0, 10.0);
+  n.Read("tour_scale_m", &c->tour_scale_m, 0.01, kHuge);
+  n.Read("tour_cell_m", &c->tour_cell_m, 0.01, 2.0);
   if (auto b = n.OptionalChild("blacklist")) {
     b->Read("duration_s", &c->blacklist.duration_s, 0.0, kHuge);
     b->Read("max_duration_s", &c->blacklist.max_duration_s, 0.0, kHuge);

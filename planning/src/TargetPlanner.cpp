@@ -6,6 +6,7 @@
 
 #include "GridMask.hpp"
 #include "dynamap/planning/CostToGo.hpp"
+#include "dynamap/planning/TargetTour.hpp"
 #include "dynamap/planning/Visibility.hpp"
 
 namespace dynamap::planning {
@@ -160,6 +161,33 @@ GridIndex FreeCellNear(const TraversalGrid& grid, GridIndex robot, int radius) {
 
 }  // namespace
 
+void TargetPlanner::ScoreByTour(TargetDecision* decision, const TraversalGrid& grid,
+                                GridIndex home, double resolution_m) const {
+  std::vector<TargetCandidate>& candidates = decision->candidates;
+  if (candidates.empty()) return;
+  TourCosts costs;
+  std::vector<GridIndex> stops;
+  for (const TargetCandidate& c : candidates) {
+    stops.push_back(c.viewpoint);
+    costs.from_robot.push_back(c.path_cost_m);
+  }
+  const int factor = std::max(1, static_cast<int>(std::lround(config_.tour_cell_m / resolution_m)));
+  std::vector<GridIndex> ends = stops;
+  ends.push_back(home);
+  std::vector<std::vector<double>> distances = CoarseDistances(grid, stops, ends, factor, resolution_m);
+  for (std::vector<double>& row : distances) {
+    costs.to_end.push_back(row.back());
+    row.pop_back();
+  }
+  costs.between = std::move(distances);
+  const std::vector<double> lengths = TourLengthsByFirstStop(costs);
+  const double shortest = *std::min_element(lengths.begin(), lengths.end());
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    candidates[i].tour_length_m = lengths[i];
+    candidates[i].score = std::exp(-(lengths[i] - shortest) / config_.tour_scale_m);
+  }
+}
+
 const char* TargetKindName(TargetKind kind) {
   switch (kind) {
     case TargetKind::kFrontier:
@@ -310,6 +338,8 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
       if (surface_seen * res >= config_.min_inspection_m) decision.candidates.push_back(c);
     }
   }
+
+  if (config_.strategy == "tour") ScoreByTour(&decision, squeeze != nullptr ? *squeeze : grid, home, res);
 
   const auto best = std::max_element(
       decision.candidates.begin(), decision.candidates.end(),

@@ -15,7 +15,9 @@
 namespace dynamap::planning {
 
 struct TargetPlannerConfig {
-  std::string strategy = "gain";         // "gain": gain over path cost; "nearest-frontier":
+  std::string strategy = "gain";         // "gain": gain over path cost; "tour": first stop
+                                         // of the shortest tour through all targets to the
+                                         // start (TargetTour.hpp); "nearest-frontier":
                                          // Yamauchi's closest reachable frontier (baseline).
   double min_frontier_length_m = 0.3;    // m, frontier regions with fewer cells·resolution drop.
   double sensor_range_m = 4.5;           // m, range within which unknown area counts as gain.
@@ -39,6 +41,11 @@ struct TargetPlannerConfig {
   double inspection_weight = 1.0;        // Score per m of unseen surface, relative to per m².
   double min_inspection_m = 0.5;         // m of unseen surface below which a region is ignored.
   double home_tolerance_m = 0.3;         // m, within this of the start the mission is done.
+  double tour_scale_m = 7.5;             // "tour": score = exp(-(tour - shortest tour) / this),
+                                         // so with the selection's switch ratio of 1.5 a
+                                         // new target must shorten the tour by 3 m.
+  double tour_cell_m = 0.2;              // "tour": cell of the coarse grid the distances
+                                         // between viewpoints are measured on.
   TargetBlacklistConfig blacklist;       // How failures turn into blacklisted places.
 };
 
@@ -54,6 +61,7 @@ struct TargetCandidate {
   double gain = 0.0;          // m² unknown area (frontier) or weighted m of surface (inspection).
   double path_cost_m = 0.0;   // Planner cost to the viewpoint, m (proximity cost included).
   double score = 0.0;
+  double tour_length_m = 0.0; // "tour": the shortest tour found that visits this target first.
 };
 
 struct TargetDecision {
@@ -94,6 +102,11 @@ class TargetPlanner {
   [[nodiscard]] const TargetPlannerConfig& config() const { return config_; }
 
  private:
+  // "tour": scores every candidate by the shortest tour found that visits it first and
+  // ends at `home` (distances between viewpoints on `grid`, coarsened).
+  void ScoreByTour(TargetDecision* decision, const TraversalGrid& grid, GridIndex home,
+                   double resolution_m) const;
+
   TargetPlannerConfig config_;
   TargetBlacklist blacklist_;
 };
