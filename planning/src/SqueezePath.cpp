@@ -1,5 +1,7 @@
 #include "dynamap/planning/SqueezePath.hpp"
 
+#include <utility>
+
 #include "dynamap/planning/AStar.hpp"
 
 namespace dynamap::planning {
@@ -16,14 +18,19 @@ TraversalGrid BuildSqueezeGrid(const GridMap& map, const CostFieldConfig& cost) 
   return BuildTraversalGrid(map, squeezed);
 }
 
-std::optional<SqueezePath> FindSqueezePath(const GridMap& map, const CostFieldConfig& cost,
-                                           GridIndex robot, GridIndex goal) {
-  SqueezePath squeeze{BuildSqueezeGrid(map, cost), {}};
+std::optional<SqueezePath> FindSqueezePath(TraversalGrid squeeze_grid, GridIndex robot,
+                                           GridIndex goal) {
+  SqueezePath squeeze{std::move(squeeze_grid), {}};
   if (!squeeze.grid.Contains(robot) || squeeze.grid.Blocked(goal)) return std::nullopt;
   FreeStandingCell(squeeze.grid, robot);
   squeeze.path = AStarSearch(squeeze.grid, robot, goal);
   if (!squeeze.path.found) return std::nullopt;
   return squeeze;
+}
+
+std::optional<SqueezePath> FindSqueezePath(const GridMap& map, const CostFieldConfig& cost,
+                                           GridIndex robot, GridIndex goal) {
+  return FindSqueezePath(BuildSqueezeGrid(map, cost), robot, goal);
 }
 
 }  // namespace dynamap::planning

@@ -26,6 +26,19 @@ TEST(PlanningConfig, ReadsOverridesAndKeepsDefaults) {
   EXPECT_DOUBLE_EQ(config->cost.robot_radius_m, CostFieldConfig{}.robot_radius_m);
 }
 
+TEST(PlanningConfig, ReadsTheTourStrategyAndItsSettings) {
+  const auto config =
+      Parse("targets: {strategy: tour, tour_scale_m: 5.0, tour_cell_m: 0.15}\n");
+  ASSERT_TRUE(config) << config.error().message;
+  EXPECT_EQ(config->targets.strategy, "tour");
+  EXPECT_DOUBLE_EQ(config->targets.tour_scale_m, 5.0);
+  EXPECT_DOUBLE_EQ(config->targets.tour_cell_m, 0.15);
+  const auto wrong = Parse("targets: {strategy: tsp}\n");
+  ASSERT_FALSE(wrong);
+  EXPECT_NE(wrong.error().message.find("targets.strategy"), std::string::npos)
+      << wrong.error().message;
+}
+
 TEST(PlanningConfig, UnknownKeyIsAnErrorNamingIt) {
   const auto config = Parse("follower: {max_sped_mps: 1.0}\n");
   ASSERT_FALSE(config);

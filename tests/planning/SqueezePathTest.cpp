@@ -41,6 +41,19 @@ TEST(SqueezePath, GoesThroughADoorwayTheFullRadiusCloses) {
   }
 }
 
+TEST(SqueezePath, AGridAlreadyBuiltGivesTheSamePath) {
+  // The planning worker builds the squeeze grid for target planning once per plan and
+  // hands it over instead of inflating the map again.
+  const GridMap map = Doorway(14);
+  const CostFieldConfig cost;
+  const auto from_map = FindSqueezePath(map, cost, kRobot, kGoal);
+  const auto from_grid = FindSqueezePath(BuildSqueezeGrid(map, cost), kRobot, kGoal);
+  ASSERT_TRUE(from_map.has_value());
+  ASSERT_TRUE(from_grid.has_value());
+  EXPECT_EQ(from_grid->path.cells, from_map->path.cells);
+  EXPECT_EQ(from_grid->grid.penalty, from_map->grid.penalty);
+}
+
 TEST(SqueezePath, FindsNoWayThroughAGapNarrowerThanTheRobot) {
   // 0.65 m between obstacle cell centres: even touching both surfaces the robot does not fit.
   EXPECT_FALSE(FindSqueezePath(Doorway(12), CostFieldConfig{}, kRobot, kGoal).has_value());

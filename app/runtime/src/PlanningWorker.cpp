@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include "dynamap/planning/BlockedWay.hpp"
 #include "dynamap/planning/CostField.hpp"
@@ -176,7 +177,7 @@ void PlanningWorker::PlanOnce(double now_s) {
       plan.path_map = {plan.goal_map};
       plan.look_at_map = Eigen::Vector2d(grid.CenterX(blocked.look_at.x),
                                          grid.CenterY(blocked.look_at.y));
-    } else if ((squeeze = planning::FindSqueezePath(grid, config_.planning.cost, robot, goal_))) {
+    } else if ((squeeze = planning::FindSqueezePath(std::move(squeeze_grid), robot, goal_))) {
       spdlog::debug("t {:.1f} s: no path to ({}, {}) with the full radius, squeezing through "
                     "with {:.3f} m", now_s, goal_.x, goal_.y,
                     planning::SqueezeRadius(config_.planning.cost, grid.resolution_m));

@@ -33,5 +33,8 @@ struct SqueezePath {
 [[nodiscard]] std::optional<SqueezePath> FindSqueezePath(const GridMap& map,
                                                          const CostFieldConfig& cost,
                                                          GridIndex robot, GridIndex goal);
+// The same on a squeeze grid already built from the map (BuildSqueezeGrid).
+[[nodiscard]] std::optional<SqueezePath> FindSqueezePath(TraversalGrid squeeze_grid,
+                                                         GridIndex robot, GridIndex goal);
 
 }  // namespace dynamap::planning
