@@ -44,6 +44,7 @@ void ReadTargets(robotio::ConfigNode& n, TargetPlannerConfig* c) {
     b->Read("max_duration_s", &c->blacklist.max_duration_s, 0.0, kHuge);
     b->Read("radius_m", &c->blacklist.radius_m, 0.0, 10.0);
     b->Read("max_failures", &c->blacklist.max_failures, 1, 100);
+    b->Read("last_try", &c->blacklist.last_try);
   }
 }
 

@@ -25,7 +25,7 @@ void TargetBlacklist::ReportFailure(GridIndex cell, double now_s) {
     if (++e.failures >= config_.max_failures) Ban(e, now_s);
     return;
   }
-  entries_.push_back({cell, 1, -1.0, 0});
+  entries_.push_back({cell, 1, -1.0, 0, false});
   if (config_.max_failures <= 1) Ban(entries_.back(), now_s);
 }
 
@@ -36,7 +36,7 @@ void TargetBlacklist::Blacklist(GridIndex cell, double now_s) {
       return;
     }
   }
-  entries_.push_back({cell, 0, -1.0, 0});
+  entries_.push_back({cell, 0, -1.0, 0, false});
   Ban(entries_.back(), now_s);
 }
 
@@ -45,6 +45,18 @@ bool TargetBlacklist::IsBlacklisted(GridIndex cell, double now_s) const {
     if (now_s < e.until_s && Near(e.cell, cell)) return true;
   }
   return false;
+}
+
+int TargetBlacklist::LiftBansForALastTry(double now_s) {
+  int lifted = 0;
+  for (Entry& e : entries_) {
+    if (now_s >= e.until_s || e.let_off) continue;
+    e.until_s = now_s;
+    e.failures = 0;
+    e.let_off = true;
+    ++lifted;
+  }
+  return lifted;
 }
 
 int TargetBlacklist::ActiveCount(double now_s) const {

@@ -14,13 +14,14 @@ robotio::Expected<PlanningConfig> Parse(const std::string& yaml) {
 TEST(PlanningConfig, ReadsOverridesAndKeepsDefaults) {
   const auto config = Parse(
       "planner: astar\n"
-      "targets: {strategy: nearest-frontier, blacklist: {max_failures: 3}}\n"
+      "targets: {strategy: nearest-frontier, blacklist: {max_failures: 3, last_try: false}}\n"
       "coverage: {inspection_distance_m: 2.0}\n"
       "guard: {footprint_radius_m: 0.4}\n");
   ASSERT_TRUE(config) << config.error().message;
   EXPECT_EQ(config->planner, "astar");
   EXPECT_EQ(config->targets.strategy, "nearest-frontier");
   EXPECT_EQ(config->targets.blacklist.max_failures, 3);
+  EXPECT_FALSE(config->targets.blacklist.last_try);
   EXPECT_DOUBLE_EQ(config->coverage.inspection_distance_m, 2.0);
   EXPECT_DOUBLE_EQ(config->guard.footprint_radius_m, 0.4);
   EXPECT_DOUBLE_EQ(config->cost.robot_radius_m, CostFieldConfig{}.robot_radius_m);

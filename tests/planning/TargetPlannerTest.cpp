@@ -144,6 +144,66 @@ TEST(TargetBlacklist, APlaceThatKeepsFailingIsBlacklistedLongerEachTime) {
   EXPECT_FALSE(blacklist.IsBlacklisted({40, 20}, 70.0));
 }
 
+TEST(TargetBlacklist, EachPlaceIsLetOffOnceForALastTry) {
+  TargetBlacklistConfig config;
+  config.max_failures = 1;
+  TargetBlacklist blacklist(config, kRes);
+  const GridIndex place{20, 20};
+  blacklist.ReportFailure(place, 0.0);
+  blacklist.Blacklist({40, 20}, 1.0);
+  EXPECT_EQ(blacklist.LiftBansForALastTry(2.0), 2);
+  EXPECT_FALSE(blacklist.IsBlacklisted(place, 2.0));
+  EXPECT_FALSE(blacklist.IsBlacklisted({40, 20}, 2.0));
+  blacklist.ReportFailure(place, 3.0);  // The last try failed too: banned for good this time.
+  EXPECT_EQ(blacklist.LiftBansForALastTry(4.0), 0);
+  EXPECT_TRUE(blacklist.IsBlacklisted(place, 4.0));
+  blacklist.Blacklist({20, 40}, 5.0);   // A place banned for the first time gets its try.
+  EXPECT_EQ(blacklist.LiftBansForALastTry(6.0), 1);
+  EXPECT_FALSE(blacklist.IsBlacklisted({20, 40}, 6.0));
+  EXPECT_EQ(blacklist.ActiveCount(6.0), 1);
+}
+
+TEST(TargetPlanner, BlacklistedRegionsAreTriedOnceMoreBeforeGoingHome) {
+  const GridMap map = RoomWithOpenings();
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  TargetPlannerConfig config = NoInspection();
+  config.blacklist.max_failures = 1;
+  config.blacklist.duration_s = 1000.0;  // Longer than the mission.
+  TargetPlanner planner(config, kRes);
+  const GridIndex robot{15, 24};
+  const GridIndex home{30, 24};
+  TargetDecision d = planner.Plan(map, grid, robot, home, nullptr, 0.0);
+  std::vector<GridIndex> regions;
+  for (double t = 1.0; d.kind == TargetKind::kFrontier && t < 20.0; t += 1.0) {
+    regions.push_back(d.chosen.region_center);
+    planner.ReportFailure(d.chosen, t);
+    d = planner.Plan(map, grid, robot, home, nullptr, t);
+  }
+  ASSERT_GE(regions.size(), 2u);
+  ASSERT_EQ(d.kind, TargetKind::kReturnToStart);  // Every region banned: home.
+  EXPECT_EQ(d.blacklisted_regions, static_cast<int>(regions.size()));
+  EXPECT_EQ(planner.LiftBansForALastTry(d, 30.0), static_cast<int>(regions.size()));
+  d = planner.Plan(map, grid, robot, home, nullptr, 30.0);
+  ASSERT_EQ(d.kind, TargetKind::kFrontier);  // One more try each ...
+  const GridIndex failed_again = d.chosen.region_center;
+  planner.ReportFailure(d.chosen, 31.0);
+  d = planner.Plan(map, grid, robot, home, nullptr, 31.0);
+  // ... but only one: a region failing its last try stays banned.
+  EXPECT_EQ(d.blacklisted_regions, 1);
+  ASSERT_EQ(d.kind, TargetKind::kFrontier);
+  for (const TargetCandidate& c : d.candidates) EXPECT_NE(c.region_center, failed_again);
+  EXPECT_EQ(planner.LiftBansForALastTry(d, 32.0), 0);  // Candidates are left.
+
+  config.blacklist.last_try = false;
+  TargetPlanner without(config, kRes);
+  TargetDecision w = without.Plan(map, grid, robot, home, nullptr, 0.0);
+  for (double t = 1.0; w.kind == TargetKind::kFrontier && t < 20.0; t += 1.0) {
+    without.ReportFailure(w.chosen, t);
+    w = without.Plan(map, grid, robot, home, nullptr, t);
+  }
+  EXPECT_EQ(without.LiftBansForALastTry(w, 30.0), 0);
+}
+
 TEST(TargetPlanner, UnreachableFrontierIsNotATarget) {
   GridMap map = RoomWithOpenings();
   Fill(&map, 40, 10, 40, 39, CellState::kObstacle);  // Wall off the east part.

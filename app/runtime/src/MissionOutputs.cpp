@@ -180,6 +180,7 @@ robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra
       {"unreachable_targets", r.unreachable_targets},
       {"blocked_plans", r.blocked_plans},
       {"squeezed_plans", r.squeezed_plans},
+      {"last_try_regions", r.last_try_regions},
       {"planner_median_ms", r.plan_median_ms},
       {"planner_p95_ms", r.plan_p95_ms},
       {"map_insert_median_ms", r.insert_median_ms},

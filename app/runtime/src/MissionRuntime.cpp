@@ -413,6 +413,7 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   r.unreachable_targets = m.counters.unreachable_targets.load();
   r.blocked_plans = m.counters.blocked_plans.load();
   r.squeezed_plans = m.counters.squeezed_plans.load();
+  r.last_try_regions = m.counters.last_try_regions.load();
   r.plan_median_ms = Percentile(planning_->plan_ms(), 0.5);
   r.plan_p95_ms = Percentile(planning_->plan_ms(), 0.95);
   r.insert_median_ms = mapping_->median_insert_ms();

@@ -82,13 +82,31 @@ void PlanningWorker::PlanOnce(double now_s) {
   // (below), so what lies beyond it is worth planning for.
   planning::TraversalGrid squeeze_grid = planning::BuildSqueezeGrid(grid, config_.planning.cost);
   planning::FreeStandingCell(squeeze_grid, robot);
-  const planning::TargetDecision decision =
+  planning::TargetDecision decision =
       targets_.Plan(without_people, traversal, robot, home, &coverage_, now_s, &squeeze_grid);
+  // Yamauchi's nearest frontier stays the plain baseline it is compared with.
+  const bool keep_dropped = config_.planning.targets.strategy != "nearest-frontier";
+  if (keep_dropped) {
+    if (const int lifted = targets_.LiftBansForALastTry(decision, now_s)) {
+      spdlog::debug("t {:.1f} s: nothing left but {} blacklisted regions: {} bans lifted for a "
+                    "last try", now_s, decision.blacklisted_regions, lifted);
+      mediator_.counters.last_try_regions += lifted;
+      decision =
+          targets_.Plan(without_people, traversal, robot, home, &coverage_, now_s, &squeeze_grid);
+    }
+  }
   spdlog::debug("t {:.1f} s: {} regions, {} unreachable, {} blacklisted, {} candidates -> {} ({}, {})",
                 now_s, decision.frontier_regions, decision.unreachable_regions,
                 decision.blacklisted_regions,
                 decision.candidates.size(), planning::TargetKindName(decision.kind),
                 decision.cell.x, decision.cell.y);
+  for (const planning::TargetCandidate& c : decision.candidates) {
+    spdlog::trace("  {} region ({:.2f}, {:.2f}) from ({:.2f}, {:.2f}): gain {:.2f}, cost {:.1f} m, "
+                  "tour {:.1f} m, score {:.3f}", planning::TargetKindName(c.kind),
+                  grid.CenterX(c.region_center.x), grid.CenterY(c.region_center.y),
+                  grid.CenterX(c.viewpoint.x), grid.CenterY(c.viewpoint.y), c.gain,
+                  c.path_cost_m, c.tour_length_m, c.score);
+  }
   Plan plan;
   plan.stamp_ns = robotio::SecondsToNanos(now_s);
   plan.kind = decision.kind;
@@ -106,15 +124,19 @@ void PlanningWorker::PlanOnce(double now_s) {
   // feet. Such a target counts as failed only when the robot has come to look from there
   // (so an unresolvable one ends up blacklisted), never for a robot driving past it.
   const std::optional<planning::TargetCandidate> previous = current_target_;
-  // Yamauchi's nearest frontier stays the plain baseline it is compared with.
-  const bool keep_dropped = config_.planning.targets.strategy != "nearest-frontier";
   planning::GridIndex goal_cell = decision.cell;
   if (decision.kind != planning::TargetKind::kReturnToStart) {
     planning::TargetSelectionConfig selection_config;
     selection_config.near_m = ArrivedM();
     const planning::TargetSelection selection = planning::SelectTarget(
         decision.candidates, current_target_, grid, robot, selection_config);
-    for (const auto& looked : selection.looked_from_here) targets_.ReportFailure(looked, now_s);
+    for (const auto& looked : selection.looked_from_here) {
+      spdlog::debug("t {:.1f} s: looked from ({:.2f}, {:.2f}) at the {} region ({:.2f}, {:.2f}) "
+                    "and it is still there: a failure", now_s, grid.CenterX(looked.viewpoint.x),
+                    grid.CenterY(looked.viewpoint.y), planning::TargetKindName(looked.kind),
+                    grid.CenterX(looked.region_center.x), grid.CenterY(looked.region_center.y));
+      targets_.ReportFailure(looked, now_s);
+    }
     if (!selection.chosen) {
       spdlog::debug("t {:.1f} s: all {} candidates at the robot's feet", now_s,
                     selection.too_near.size());
@@ -194,6 +216,10 @@ void PlanningWorker::PlanOnce(double now_s) {
     }
   }
   if (path.found && now_s - goal_since_s_ > config_.target_timeout_s) {
+    spdlog::debug("t {:.1f} s: the {} region ({:.2f}, {:.2f}) not reached in {:.0f} s: a failure",
+                  now_s, planning::TargetKindName(goal_target_.kind),
+                  grid.CenterX(goal_target_.region_center.x),
+                  grid.CenterY(goal_target_.region_center.y), config_.target_timeout_s);
     targets_.ReportFailure(goal_target_, now_s);
     goal_since_s_ = now_s;
   }

@@ -15,6 +15,8 @@ struct TargetBlacklistConfig {
   double max_duration_s = 600.0;
   double radius_m = 0.5;     // m, targets this close to a blacklisted place count as it.
   int max_failures = 2;      // Failed approaches before a place is blacklisted.
+  bool last_try = true;      // When nothing else is left, every banned place is tried once
+                             // more before the robot goes home (LiftBansForALastTry).
 };
 
 class TargetBlacklist {
@@ -26,6 +28,10 @@ class TargetBlacklist {
   void Blacklist(GridIndex cell, double now_s);
   [[nodiscard]] bool IsBlacklisted(GridIndex cell, double now_s) const;
   [[nodiscard]] int ActiveCount(double now_s) const;
+  // Ends the bans running at `now_s` of places never let off before, so each place gets
+  // one more try when nothing else is left; returns how many. A place banned since it was
+  // let off stays banned.
+  int LiftBansForALastTry(double now_s);
 
  private:
   struct Entry {
@@ -33,6 +39,7 @@ class TargetBlacklist {
     int failures = 0;
     double until_s = -1.0;  // Blacklisted while now < until_s.
     int times = 0;          // How often it has been blacklisted.
+    bool let_off = false;   // Its ban was lifted for a last try.
   };
   void Ban(Entry& e, double now_s) const;
   [[nodiscard]] bool Near(GridIndex a, GridIndex b) const;

@@ -97,6 +97,17 @@ class TargetPlanner {
   void ReportUnreachable(const TargetCandidate& target, double now_s) {
     blacklist_.Blacklist(target.region_center, now_s);
   }
+  // `decision` found nothing left but blacklisted regions: with `blacklist.last_try`, lifts
+  // the bans for a last try (TargetBlacklist::LiftBansForALastTry) and returns how many, so
+  // the caller plans again. A region that failed early (a door shut while the robot looked
+  // in) would otherwise stay unexplored when its ban outlasts everything else.
+  int LiftBansForALastTry(const TargetDecision& decision, double now_s) {
+    if (!config_.blacklist.last_try || !decision.candidates.empty() ||
+        decision.blacklisted_regions == 0) {
+      return 0;
+    }
+    return blacklist_.LiftBansForALastTry(now_s);
+  }
 
   [[nodiscard]] const TargetBlacklist& blacklist() const { return blacklist_; }
   [[nodiscard]] const TargetPlannerConfig& config() const { return config_; }

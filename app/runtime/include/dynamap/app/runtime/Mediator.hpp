@@ -71,6 +71,7 @@ struct MissionCounters {
   std::atomic<std::int64_t> unreachable_targets{0};
   std::atomic<std::int64_t> blocked_plans{0};  // Plans that waited for people to move on.
   std::atomic<std::int64_t> squeezed_plans{0};  // Paths only the squeeze radius found.
+  std::atomic<std::int64_t> last_try_regions{0};  // Blacklisted regions let off once more.
   // Simulated time up to which each worker has finished its work (lockstep pacing).
   std::atomic<std::int64_t> slam_done_ns{-1};
   std::atomic<std::int64_t> planning_done_ns{-1};

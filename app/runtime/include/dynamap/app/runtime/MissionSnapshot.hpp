@@ -70,6 +70,7 @@ struct MissionReport {
   std::int64_t unreachable_targets = 0;  // Goals given up: no path, even without people.
   std::int64_t blocked_plans = 0;        // Plans that stood waiting for people to move on.
   std::int64_t squeezed_plans = 0;       // Paths found only with the squeeze radius.
+  std::int64_t last_try_regions = 0;     // Blacklisted regions let off for a last try.
   double plan_median_ms = 0.0;
   double plan_p95_ms = 0.0;
   double insert_median_ms = 0.0;
