@@ -2,6 +2,7 @@
 // start / pause / resume / stop transitions and the buttons they enable, the report at the
 // end, a world file that cannot be opened, a recording replayed (source choice, progress,
 // live figures) or refused, and the projected grid's picture.
+#include <QComboBox>
 #include <QDir>
 #include <QFile>
 #include <QLineEdit>
@@ -114,6 +115,22 @@ class MissionWorkspaceTest : public QObject {
     QVERIFY(QString::fromStdString(config.world_file).endsWith(QStringLiteral("small_office.yaml")));
     QVERIFY(QString::fromStdString(config.rig_file).endsWith(QStringLiteral("two_kinects.yaml")));
     QVERIFY(!recording->isVisibleTo(panel));
+  }
+
+  void TheTargetStrategyChosenGoesIntoTheMission() {
+    MissionWorkspace workspace;
+    MissionPanel* panel = workspace.Panel();
+    QCOMPARE(panel->BuildConfig().planning.targets.strategy, std::string("gain"));
+    auto* targets = panel->findChild<QComboBox*>(QStringLiteral("mission_targets"));
+    QVERIFY(targets != nullptr && targets->isVisibleTo(panel));
+    QCOMPARE(targets->count(), 3);
+    targets->setCurrentIndex(targets->findData(QStringLiteral("tour")));
+    QCOMPARE(panel->BuildConfig().planning.targets.strategy, std::string("tour"));
+    panel->SetTargetStrategy(QStringLiteral("nearest-frontier"));
+    QCOMPARE(targets->currentText(), QStringLiteral("Nearest frontier (baseline)"));
+    QCOMPARE(panel->BuildConfig().planning.targets.strategy, std::string("nearest-frontier"));
+    panel->SetTargetStrategy(QStringLiteral("no-such-strategy"));  // Ignored.
+    QCOMPARE(panel->BuildConfig().planning.targets.strategy, std::string("nearest-frontier"));
   }
 
   // A short recorded mission replayed in the workspace: the progress bar runs through the

@@ -176,6 +176,17 @@ QWidget* MissionPanel::MakeSetupGroup() {
   poses_->addItem(tr("Odometry"), static_cast<int>(runtime::PoseSource::kOdometry));
   poses_->addItem(tr("Ground truth"), static_cast<int>(runtime::PoseSource::kGroundTruth));
   form->addRow(tr("Poses"), poses_);
+  targets_ = new QComboBox;
+  targets_->setObjectName(QStringLiteral("mission_targets"));
+  targets_->addItem(tr("Gain over path cost"), QStringLiteral("gain"));
+  targets_->addItem(tr("Tour through all targets"), QStringLiteral("tour"));
+  targets_->addItem(tr("Nearest frontier (baseline)"), QStringLiteral("nearest-frontier"));
+  targets_->setToolTip(tr("How the next target is chosen: the best gain over path cost, the "
+                          "first stop of the shortest tour through all targets back to the "
+                          "start, or Yamauchi's nearest frontier without inspection"));
+  SetTargetStrategy(QString::fromStdString(planning::TargetPlannerConfig{}.strategy));
+  KeepNarrow(targets_);
+  form->addRow(tr("Targets"), targets_);
   kinect_size_ = new QComboBox;
   for (const QSize size : {QSize(160, 120), QSize(320, 240), QSize(640, 480)}) {
     kinect_size_->addItem(QStringLiteral("%1 × %2").arg(size.width()).arg(size.height()), size);
@@ -311,6 +322,7 @@ runtime::MissionConfig MissionPanel::BuildConfig() const {
   // The runtime loads exactly the files it is given.
   config.robot_file = ResourcePath(QStringLiteral("robots/segway_rmp50.yaml")).toStdString();
   config.poses = static_cast<runtime::PoseSource>(poses_->currentData().toInt());
+  config.planning.targets.strategy = targets_->currentData().toString().toStdString();
   const QSize size = kinect_size_->currentData().toSize();
   config.kinect_width = size.width();
   config.kinect_height = size.height();
@@ -340,6 +352,11 @@ void MissionPanel::SetRigFile(const QString& file) { SelectFile(rig_, file); }
 
 void MissionPanel::SetPoseSource(runtime::PoseSource source) {
   poses_->setCurrentIndex(poses_->findData(static_cast<int>(source)));
+}
+
+void MissionPanel::SetTargetStrategy(const QString& strategy) {
+  const int index = targets_->findData(strategy);
+  if (index >= 0) targets_->setCurrentIndex(index);
 }
 
 void MissionPanel::SetKinectSize(int width, int height) {

@@ -43,6 +43,8 @@ class MissionPanel : public QWidget {
   [[nodiscard]] std::optional<RobotSetup> BuildRobotSetup() const;
   void SetRigFile(const QString& file);
   void SetPoseSource(runtime::PoseSource source);
+  // "gain", "tour" or "nearest-frontier" (planning::TargetPlannerConfig::strategy).
+  void SetTargetStrategy(const QString& strategy);
   void SetKinectSize(int width, int height);
   void SetTimeLimit(double seconds);
   void SetSavePeriod(double seconds);
@@ -89,6 +91,7 @@ class MissionPanel : public QWidget {
   QComboBox* world_ = nullptr;
   QComboBox* rig_ = nullptr;
   QComboBox* poses_ = nullptr;
+  QComboBox* targets_ = nullptr;
   QComboBox* kinect_size_ = nullptr;
   QDoubleSpinBox* time_limit_ = nullptr;
   QComboBox* pace_ = nullptr;
