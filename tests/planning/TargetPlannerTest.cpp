@@ -194,14 +194,22 @@ TEST(TargetPlanner, BlacklistedRegionsAreTriedOnceMoreBeforeGoingHome) {
   for (const TargetCandidate& c : d.candidates) EXPECT_NE(c.region_center, failed_again);
   EXPECT_EQ(planner.LiftBansForALastTry(d, 32.0), 0);  // Candidates are left.
 
-  config.blacklist.last_try = false;
-  TargetPlanner without(config, kRes);
-  TargetDecision w = without.Plan(map, grid, robot, home, nullptr, 0.0);
-  for (double t = 1.0; w.kind == TargetKind::kFrontier && t < 20.0; t += 1.0) {
-    without.ReportFailure(w.chosen, t);
-    w = without.Plan(map, grid, robot, home, nullptr, t);
+  // Switched off, and never for the nearest frontier (the plain baseline).
+  TargetPlannerConfig off = config;
+  off.blacklist.last_try = false;
+  TargetPlannerConfig nearest = config;
+  nearest.strategy = "nearest-frontier";
+  for (const TargetPlannerConfig& c : {off, nearest}) {
+    TargetPlanner without(c, kRes);
+    TargetDecision w = without.Plan(map, grid, robot, home, nullptr, 0.0);
+    for (double t = 1.0; w.kind == TargetKind::kFrontier && t < 20.0; t += 1.0) {
+      without.ReportFailure(w.chosen, t);
+      w = without.Plan(map, grid, robot, home, nullptr, t);
+    }
+    ASSERT_EQ(w.kind, TargetKind::kReturnToStart) << c.strategy;
+    EXPECT_GE(w.blacklisted_regions, 2) << c.strategy;
+    EXPECT_EQ(without.LiftBansForALastTry(w, 30.0), 0) << c.strategy;
   }
-  EXPECT_EQ(without.LiftBansForALastTry(w, 30.0), 0);
 }
 
 TEST(TargetPlanner, UnreachableFrontierIsNotATarget) {

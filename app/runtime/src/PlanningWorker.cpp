@@ -84,16 +84,12 @@ void PlanningWorker::PlanOnce(double now_s) {
   planning::FreeStandingCell(squeeze_grid, robot);
   planning::TargetDecision decision =
       targets_.Plan(without_people, traversal, robot, home, &coverage_, now_s, &squeeze_grid);
-  // Yamauchi's nearest frontier stays the plain baseline it is compared with.
-  const bool keep_dropped = config_.planning.targets.strategy != "nearest-frontier";
-  if (keep_dropped) {
-    if (const int lifted = targets_.LiftBansForALastTry(decision, now_s)) {
-      spdlog::debug("t {:.1f} s: nothing left but {} blacklisted regions: {} bans lifted for a "
-                    "last try", now_s, decision.blacklisted_regions, lifted);
-      mediator_.counters.last_try_regions += lifted;
-      decision =
-          targets_.Plan(without_people, traversal, robot, home, &coverage_, now_s, &squeeze_grid);
-    }
+  if (const int lifted = targets_.LiftBansForALastTry(decision, now_s)) {
+    spdlog::debug("t {:.1f} s: nothing left but {} blacklisted regions: {} bans lifted for a "
+                  "last try", now_s, decision.blacklisted_regions, lifted);
+    mediator_.counters.last_try_regions += lifted;
+    decision =
+        targets_.Plan(without_people, traversal, robot, home, &coverage_, now_s, &squeeze_grid);
   }
   spdlog::debug("t {:.1f} s: {} regions, {} unreachable, {} blacklisted, {} candidates -> {} ({}, {})",
                 now_s, decision.frontier_regions, decision.unreachable_regions,
@@ -124,6 +120,8 @@ void PlanningWorker::PlanOnce(double now_s) {
   // feet. Such a target counts as failed only when the robot has come to look from there
   // (so an unresolvable one ends up blacklisted), never for a robot driving past it.
   const std::optional<planning::TargetCandidate> previous = current_target_;
+  // Yamauchi's nearest frontier stays the plain baseline it is compared with.
+  const bool keep_dropped = config_.planning.targets.strategy != "nearest-frontier";
   planning::GridIndex goal_cell = decision.cell;
   if (decision.kind != planning::TargetKind::kReturnToStart) {
     planning::TargetSelectionConfig selection_config;

@@ -100,10 +100,11 @@ class TargetPlanner {
   // `decision` found nothing left but blacklisted regions: with `blacklist.last_try`, lifts
   // the bans for a last try (TargetBlacklist::LiftBansForALastTry) and returns how many, so
   // the caller plans again. A region that failed early (a door shut while the robot looked
-  // in) would otherwise stay unexplored when its ban outlasts everything else.
+  // in) would otherwise stay unexplored when its ban outlasts everything else. Never for
+  // the nearest frontier, the plain baseline the other strategies are compared with.
   int LiftBansForALastTry(const TargetDecision& decision, double now_s) {
-    if (!config_.blacklist.last_try || !decision.candidates.empty() ||
-        decision.blacklisted_regions == 0) {
+    if (!config_.blacklist.last_try || config_.strategy == "nearest-frontier" ||
+        !decision.candidates.empty() || decision.blacklisted_regions == 0) {
       return 0;
     }
     return blacklist_.LiftBansForALastTry(now_s);
