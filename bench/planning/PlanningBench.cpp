@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -190,7 +191,8 @@ void BM_TargetPlanning(benchmark::State& state) {
   const GridMap map = PartlyExploredOffice();
   const TraversalGrid grid = BuildTraversalGrid(map, CostFieldConfig{});
   TargetPlannerConfig config;
-  config.strategy = state.range(0) == 0 ? "gain" : "nearest-frontier";
+  config.strategy = std::array<const char*, 3>{"gain", "nearest-frontier", "tour"}.at(
+      static_cast<std::size_t>(state.range(0)));
   const TargetPlanner planner(config, kRes);
   SurfaceCoverage coverage;
   coverage.Observe(map, {1.5, 8.0, 0.0});
@@ -202,7 +204,7 @@ void BM_TargetPlanning(benchmark::State& state) {
   }
   state.counters["candidates"] = candidates;
 }
-BENCHMARK(BM_TargetPlanning)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TargetPlanning)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace dynamap::planning

@@ -110,6 +110,7 @@ TEST(TargetTour, TourStrategyClearsTheSmallRegionBehindBeforeTheLargeOneAhead) {
   const TraversalGrid grid = BuildTraversalGrid(map, cost);
   TargetPlannerConfig config;
   config.inspection = false;
+  config.strategy = "gain";
   const GridIndex robot{50, 30};
   const GridIndex home{100, 30};
 
