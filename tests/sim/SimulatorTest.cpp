@@ -175,6 +175,13 @@ TEST(Simulator, DrivingIntoAWallIsACollisionWithoutPenetration) {
   (void)simulator.Advance(1.0);
   EXPECT_GT(simulator.TruePose().theta - stopped.theta, 0.5);
   EXPECT_NEAR(simulator.TruePose().x, stopped.x, 1e-9);
+  // Pushing on while turning (a path follower turning towards its path) turns it too,
+  // without moving it into the wall.
+  const Pose2D turned = simulator.TruePose();
+  simulator.SetCommand({0, 0.05, -1.0});
+  (void)simulator.Advance(2.0);  // The first half second undoes the turn the other way.
+  EXPECT_LT(simulator.TruePose().theta - turned.theta, -1.0);
+  EXPECT_LE(simulator.TruePose().x + robot.footprint_radius_m, 2.0 + 1e-9);
   // Backing off is allowed.
   simulator.SetCommand({0, -0.5, 0.0});
   (void)simulator.Advance(1.0);

@@ -48,6 +48,15 @@ Pose2D DriveBaseModel::Propose(double dt_s) const {
 
 void DriveBaseModel::Move(double dt_s) {
   const auto [v, omega] = NextVelocities(dt_s);
+  Advance(dt_s, v, omega);
+}
+
+void DriveBaseModel::TurnOnly(double dt_s) {
+  v_ = 0.0;
+  Advance(dt_s, 0.0, NextVelocities(dt_s).second);
+}
+
+void DriveBaseModel::Advance(double dt_s, double v, double omega) {
   const double v_mean = (v_ + v) / 2.0;
   const double omega_mean = (omega_ + omega) / 2.0;
   pose_ = Integrate(pose_, v_mean, omega_mean, dt_s);
@@ -65,11 +74,6 @@ void DriveBaseModel::Move(double dt_s) {
                     sigma * std::sqrt(std::abs(d_left)) * GaussianFromKey(HashKey(key, 11));
   right_measured_ += d_right * (1.0 + config_.encoder_scale_error_right) +
                      sigma * std::sqrt(std::abs(d_right)) * GaussianFromKey(HashKey(key, 12));
-}
-
-void DriveBaseModel::Halt() {
-  v_ = 0.0;
-  omega_ = 0.0;
 }
 
 OdometryReading DriveBaseModel::Odometry(std::int64_t stamp_ns) const {

@@ -69,7 +69,8 @@ void Simulator::Step(SimOutput* out) {
 
   // Collision: accept a motion that keeps the footprint free, that does not push it deeper
   // into an overlap (a person may walk into a standing robot) or that only turns it (the
-  // footprint is a circle); otherwise the base stops.
+  // footprint is a circle); otherwise the base stops moving ahead and only turns, so a
+  // robot pressed against a door post while turning towards its path can turn free.
   const Pose2D proposed = base_.Propose(dt);
   const double radius = robot_.footprint_radius_m;
   const Contact now = collision_world_.Check({pose0.x, pose0.y}, radius, t1_s, &person_clock_s_);
@@ -79,7 +80,7 @@ void Simulator::Step(SimOutput* out) {
   const bool blocked = moving && next.clearance_m < 0.0 && next.clearance_m < now.clearance_m;
   const bool touching = now.clearance_m < 0.0 || (moving && next.clearance_m < 0.0);
   if (blocked) {
-    base_.Halt();
+    base_.TurnOnly(dt);
   } else {
     base_.Move(dt);
   }

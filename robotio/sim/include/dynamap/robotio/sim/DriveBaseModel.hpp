@@ -20,8 +20,9 @@ class DriveBaseModel {
   [[nodiscard]] Pose2D Propose(double dt_s) const;
   // Accepts the proposed motion over dt (wheels turn, encoders count).
   void Move(double dt_s);
-  // The base is blocked: it stays where it is and its velocity drops to zero.
-  void Halt();
+  // The base is blocked ahead but turns: its forward velocity drops to zero and the
+  // commanded turn goes on (a circular footprint turns on the spot against a wall).
+  void TurnOnly(double dt_s);
 
   [[nodiscard]] OdometryReading Odometry(std::int64_t stamp_ns) const;
   // One gyro reading of the current rates; `index` numbers readings for reproducible noise.
@@ -35,6 +36,8 @@ class DriveBaseModel {
 
  private:
   [[nodiscard]] std::pair<double, double> NextVelocities(double dt_s) const;
+  // Moves from the current velocities to (v, omega) over dt: pose, wheels, encoders.
+  void Advance(double dt_s, double v, double omega);
 
   RobotConfig config_;
   std::uint64_t seed_;
