@@ -1,5 +1,7 @@
 #include "dynamap/app/runtime/ControlWorker.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/MapGuard.hpp"
 #include "dynamap/robotio/Time.hpp"
@@ -10,7 +12,8 @@ ControlWorker::ControlWorker(Mediator& mediator, robotio::Rig rig, ControlWorker
     : mediator_(mediator),
       rig_(std::move(rig)),
       config_(config),
-      follower_(config.follower) {}
+      follower_(config.follower),
+      stall_(config.stall) {}
 
 robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
   // Guard first, on raw frames: a person stepping in is seen before any map knows.
@@ -21,6 +24,20 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
   std::vector<const robotio::DepthFrame*> pointers;
   for (const auto& f : frames) pointers.push_back(&f);
   const robotio::Pose2D pose = mediator_.CurrentPose();
+  // Driving commanded and not moving: pressed against something no Kinect sees (within
+  // their 0.5 m blind range). The planner gets it in the way; the base backs away from it.
+  if (stall_.Update(pose, last_.v, dt_s)) {
+    ++mediator_.counters.stall_stops;
+    spdlog::debug("t {:.2f} s: the base stalled at ({:.2f}, {:.2f}) driving at {:.2f} m/s: "
+                  "backing away", robotio::NanosToSeconds(now_ns), pose.x, pose.y, last_.v);
+    const double direction = last_.v < 0.0 ? -1.0 : 1.0;
+    mediator_.ReportObstacles(
+        planning::StallObstacle(pose, config_.guard.footprint_radius_m, direction));
+    recovery_ = {now_ns, -direction * config_.guard.backoff_speed_mps, 0.0};
+    recovery_until_ns_ = now_ns + robotio::SecondsToNanos(config_.stall_backoff_s);
+    follower_.Stop();
+    return {now_ns, 0.0, 0.0};
+  }
   const planning::GuardVerdict verdict =
       planning::CheckCollision(pointers, rig_, last_, config_.guard);
   if (verdict.stop) {

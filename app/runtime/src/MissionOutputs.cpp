@@ -176,6 +176,7 @@ robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra
       {"registrations_rejected", r.registrations_rejected},
       {"guard_stops", r.guard_stops},
       {"map_guard_stops", r.map_guard_stops},
+      {"stall_stops", r.stall_stops},
       {"plans", r.plans},
       {"unreachable_targets", r.unreachable_targets},
       {"blocked_plans", r.blocked_plans},

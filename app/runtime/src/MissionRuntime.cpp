@@ -409,6 +409,7 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   r.registrations_rejected = m.counters.registrations_rejected.load();
   r.guard_stops = m.counters.guard_stops.load();
   r.map_guard_stops = m.counters.map_guard_stops.load();
+  r.stall_stops = m.counters.stall_stops.load();
   r.plans = m.counters.plans.load();
   r.unreachable_targets = m.counters.unreachable_targets.load();
   r.blocked_plans = m.counters.blocked_plans.load();

@@ -10,6 +10,7 @@
 #include "dynamap/planning/CollisionGuard.hpp"
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/PathFollower.hpp"
+#include "dynamap/planning/StallDetector.hpp"
 #include "dynamap/robotio/Rig.hpp"
 
 namespace dynamap::app::runtime {
@@ -21,9 +22,12 @@ struct ControlWorkerConfig {
   double look_around_yaw_rate = 0.5;      // rad/s of the first look around.
   double initial_turn_rad = 6.3;          // rad turned in place before following plans.
   double recovery_s = 1.0;                // s of the guard's recovery motion after a stop.
+  double stall_backoff_s = 2.0;           // s backing away (at the guard's back-off speed)
+                                          // from what a stalled base pressed against.
   double map_guard_s = 0.5;               // s ahead the map guard checks the footprint.
   planning::PathFollowerConfig follower;
   planning::CollisionGuardConfig guard;
+  planning::StallDetectorConfig stall;
   planning::CostFieldConfig cost;         // To read clearance off the planner's cost grid.
 };
 
@@ -44,6 +48,7 @@ class ControlWorker {
   robotio::Rig rig_;
   ControlWorkerConfig config_;
   planning::PathFollower follower_;
+  planning::StallDetector stall_;
   std::uint64_t plan_version_ = 0;
   robotio::VelocityCommand last_;
   std::int64_t recovery_until_ns_ = -1;

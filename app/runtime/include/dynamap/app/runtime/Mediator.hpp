@@ -67,6 +67,7 @@ struct MissionCounters {
   std::atomic<std::int64_t> collisions{0};
   std::atomic<std::int64_t> guard_stops{0};
   std::atomic<std::int64_t> map_guard_stops{0};  // Control steps the map guard held back.
+  std::atomic<std::int64_t> stall_stops{0};  // Times the base was found pressed against something.
   std::atomic<std::int64_t> plans{0};
   std::atomic<std::int64_t> unreachable_targets{0};
   std::atomic<std::int64_t> blocked_plans{0};  // Plans that waited for people to move on.
