@@ -104,14 +104,18 @@ robotio::VelocityCommand ControlWorker::HoldAtKnownObstacles(
   return command;
 }
 
+robotio::VelocityCommand ControlWorker::Tick(std::int64_t now_ns, double dt_s) {
+  last_ = Step(now_ns, dt_s);
+  return last_;
+}
+
 void ControlWorker::Run() {
   const std::int64_t period_ns = robotio::SecondsToNanos(1.0 / config_.rate_hz);
   std::int64_t next_ns = 0;
   while (mediator_.control.WaitWhilePaused()) {
     if (!mediator_.clock.WaitUntil(next_ns, mediator_.control)) break;
     const std::int64_t now_ns = mediator_.clock.now_ns();
-    last_ = Step(now_ns, 1.0 / config_.rate_hz);
-    mediator_.command.Set(last_);
+    mediator_.command.Set(Tick(now_ns, 1.0 / config_.rate_hz));
     mediator_.counters.control_done_ns = now_ns;
     next_ns = now_ns + period_ns;
   }

@@ -35,6 +35,9 @@ class ControlWorker {
  public:
   ControlWorker(Mediator& mediator, robotio::Rig rig, ControlWorkerConfig config);
   void Run();  // Thread body: until the mission stops; leaves the base commanded to stop.
+  // One control step at mission time `now_ns`, `dt_s` after the previous one: returns the
+  // command, which is in force until the next step (Run publishes it).
+  robotio::VelocityCommand Tick(std::int64_t now_ns, double dt_s);
 
  private:
   [[nodiscard]] robotio::VelocityCommand Step(std::int64_t now_ns, double dt_s);
