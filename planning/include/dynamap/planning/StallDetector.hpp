@@ -29,9 +29,6 @@ class StallDetector {
   // One control step: `commanded_v_mps` is the command in force over the last `dt_s`,
   // `pose` where the base is now. True once per stall: the window starts afresh after it.
   [[nodiscard]] bool Update(const robotio::Pose2D& pose, double commanded_v_mps, double dt_s);
-  void Reset() { window_.clear(); }  // After a stop the base starts afresh.
-
-  [[nodiscard]] const StallDetectorConfig& config() const { return config_; }
 
  private:
   struct Sample {
