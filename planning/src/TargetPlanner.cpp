@@ -17,6 +17,10 @@ namespace {
 // how far (m) the next one must be from those that saw too little.
 constexpr int kMaxViewpointTries = 12;
 constexpr double kWantingRadiusM = 0.3;
+// Cells of an inspection region a viewpoint is sought for when none sees its centre.
+constexpr int kInspectionAnchors = 6;
+// Cells around an inspection viewpoint reached by squeezing that must be free as well.
+constexpr int kFreeStandingCells = 2;
 
 struct Region {
   std::vector<int> cells;
@@ -55,6 +59,28 @@ std::vector<Region> Regions(const GridMap& map, const cv::Mat& mask, int min_cel
     kept.push_back(std::move(r));
   }
   return kept;
+}
+
+// The region's centre, then up to `count - 1` more of its cells, each the one farthest
+// from those already taken: the ends and corners of a wall or a desk. A surface region's
+// centre can lie where nothing sees it (a desk mapped as a speckled block: its centre is a
+// speck inside, and the front edge, connected to it, would never be looked at).
+std::vector<GridIndex> SpreadCells(const GridMap& map, const Region& region, int count) {
+  std::vector<GridIndex> anchors{region.center};
+  std::vector<double> nearest(region.cells.size(), kInfinity);
+  while (static_cast<int>(anchors.size()) < count) {
+    const GridIndex last = anchors.back();
+    std::size_t farthest = 0;
+    for (std::size_t k = 0; k < region.cells.size(); ++k) {
+      const GridIndex c = map.Cell(region.cells[k]);
+      const double d = (c.x - last.x) * (c.x - last.x) + (c.y - last.y) * (c.y - last.y);
+      nearest[k] = std::min(nearest[k], d);
+      if (nearest[k] > nearest[farthest]) farthest = k;
+    }
+    if (nearest[farthest] <= 0.0) break;  // Every cell taken.
+    anchors.push_back(map.Cell(region.cells[farthest]));
+  }
+  return anchors;
 }
 
 // No obstacle cell on the segment between two cell centres (what a sensor at `a` sees).
@@ -221,6 +247,31 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
     }
     return &squeeze_cost_to_go;
   };
+  // The same, but only to cells where the full radius stands free with room to spare
+  // (the cells within kFreeStandingCells of them free too): a surface is looked at from a
+  // room the robot squeezed into through its doorway, never from inside a squeeze (the
+  // 0.75 m between a desk and a wall leaves the 0.72 m base no room to steer, a speckled
+  // desk edge leaves single free cells in it, and looking at a surface is not worth
+  // touching it).
+  std::vector<double> free_standing_squeeze_costs;
+  auto free_standing_squeezed_costs = [&]() -> const std::vector<double>& {
+    if (free_standing_squeeze_costs.empty()) {
+      cv::Mat free(grid.height, grid.width, CV_8UC1);
+      for (int i = 0; i < static_cast<int>(grid.penalty.size()); ++i) {
+        free.at<std::uint8_t>(i / grid.width, i % grid.width) = grid.Blocked(i) ? 0 : 255;
+      }
+      const int side = 2 * kFreeStandingCells + 1;
+      cv::erode(free, free, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(side, side)),
+                cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+      free_standing_squeeze_costs = *squeezed_costs();
+      for (int i = 0; i < static_cast<int>(free_standing_squeeze_costs.size()); ++i) {
+        if (free.at<std::uint8_t>(i / grid.width, i % grid.width) == 0) {
+          free_standing_squeeze_costs[i] = kInfinity;
+        }
+      }
+    }
+    return free_standing_squeeze_costs;
+  };
   const bool nearest = config_.strategy == "nearest-frontier";
 
   // Frontier pixels: navigable cells 4-adjacent to unknown (dilate unknown by a cross).
@@ -316,17 +367,22 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
         continue;
       }
       // Well inside the inspection distance, so the surface counts once seen from there.
-      Viewpoint vp =
-          FindViewpoint(map, cost_to_go, region.center, 0.0, 0.8 * inspect_cells, Excluded{});
-      if (!vp.found && squeezed_costs() != nullptr) {
-        vp = FindViewpoint(map, *squeezed_costs(), region.center, 0.0, 0.8 * inspect_cells,
-                           Excluded{});
+      Viewpoint vp;
+      GridIndex anchor = region.center;
+      for (const GridIndex& a : SpreadCells(map, region, kInspectionAnchors)) {
+        vp = FindViewpoint(map, cost_to_go, a, 0.0, 0.8 * inspect_cells, Excluded{});
+        if (!vp.found && squeezed_costs() != nullptr) {
+          vp = FindViewpoint(map, free_standing_squeezed_costs(), a, 0.0, 0.8 * inspect_cells,
+                             Excluded{});
+        }
+        anchor = a;
+        if (vp.found) break;
       }
       if (!vp.found) continue;
       TargetCandidate c;
       c.kind = TargetKind::kInspection;
       c.viewpoint = vp.cell;
-      c.region_center = region.center;
+      c.region_center = anchor;
       c.region_cells = static_cast<int>(region.cells.size());
       c.path_cost_m = vp.cost * res;
       int surface_seen = 0;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/SqueezePath.hpp"
@@ -380,6 +381,86 @@ TEST(TargetPlanner, ARoomBehindADoorwayOnlyTheSqueezePassesIsPlannedFor) {
   const TargetDecision b = planner.Plan(open, open_grid, robot, robot, nullptr, 0.0, &open_squeeze);
   EXPECT_EQ(a.chosen.viewpoint, b.chosen.viewpoint);
   EXPECT_GT(a.chosen.viewpoint.y, 30);
+}
+
+TEST(TargetPlanner, SurfacesAreLookedAtFromWhereTheFullRadiusStandsFree) {
+  // A corridor (y 20..39) with, to the east, a 3.9 m niche 0.75 m between obstacle cell
+  // centres (a desk beside a wall) and, to the north, a room behind a doorway as narrow.
+  // Only the squeeze radius gets into either. The room's far walls are looked at from
+  // inside the room, where the robot stands free; the niche's far end from nowhere: the
+  // 0.72 m base would have to drive 3 m with centimetres to spare to look at it.
+  constexpr double kCell = 0.05;
+  GridMap map(200, 100, kCell, CellState::kObstacle);
+  Fill(&map, 1, 20, 120, 39, CellState::kNavigable);   // Corridor.
+  Fill(&map, 121, 23, 198, 36, CellState::kNavigable);  // Niche.
+  Fill(&map, 41, 41, 79, 94, CellState::kNavigable);    // Room ...
+  Fill(&map, 51, 40, 64, 40, CellState::kNavigable);    // ... and its doorway.
+  const CostFieldConfig cost;  // The office robot: 0.36 m.
+  const TraversalGrid grid = BuildTraversalGrid(map, cost);
+  const TraversalGrid squeeze = BuildSqueezeGrid(map, cost);
+  ASSERT_TRUE(grid.Blocked({58, 40}) && grid.Blocked({150, 30}));
+  ASSERT_FALSE(squeeze.Blocked({58, 40}) || squeeze.Blocked({150, 30}));
+  // Visit inspection targets until none is left, looking at each region from its
+  // viewpoint as the runtime does.
+  const TargetPlanner planner(TargetPlannerConfig{}, kCell);
+  const GridIndex home{20, 30};
+  robotio::Pose2D pose{map.CenterX(home.x), map.CenterY(home.y), 0.0};
+  SurfaceCoverage coverage;
+  coverage.Observe(map, pose);
+  int in_room = 0;
+  TargetDecision d;
+  for (int visits = 0; visits < 60; ++visits) {
+    d = planner.Plan(map, grid, map.CellAt(pose.x, pose.y), home, &coverage, 0.0, &squeeze);
+    if (d.kind != TargetKind::kInspection) break;
+    EXPECT_FALSE(grid.Blocked(d.cell)) << d.cell.x << ", " << d.cell.y;
+    EXPECT_LE(d.cell.x, 120);
+    if (d.cell.y > 40) ++in_room;
+    const GridIndex c = d.chosen.region_center;
+    pose = {map.CenterX(d.cell.x), map.CenterY(d.cell.y), 0.0};
+    pose.theta = std::atan2(map.CenterY(c.y) - pose.y, map.CenterX(c.x) - pose.x);
+    coverage.Observe(map, pose);
+  }
+  EXPECT_EQ(d.kind, TargetKind::kReturnToStart);
+  EXPECT_GT(in_room, 0);
+  // The room's far wall was seen from close by; the niche's far end was not.
+  EXPECT_TRUE(coverage.InspectedNear(map, {60, 95}));
+  EXPECT_FALSE(coverage.InspectedNear(map, {199, 30}));
+}
+
+TEST(TargetPlanner, ADeskMappedAsASpeckledBlockIsLookedAtAlongItsEdge) {
+  // A desk whose top the Kinects saw in specks: floor cells inside its block make the
+  // inside specks surfaces, connected to its edge, and the region's centre one of those
+  // specks, which no viewpoint sees. The edge is looked at all the same.
+  GridMap map(80, 60, kRes, CellState::kObstacle);
+  Fill(&map, 1, 1, 78, 58, CellState::kNavigable);
+  Fill(&map, 30, 40, 49, 45, CellState::kObstacle);  // The desk, 2 x 0.6 m ...
+  for (const GridIndex hole : {GridIndex{38, 42}, GridIndex{40, 43}, GridIndex{42, 42},
+                               GridIndex{34, 43}, GridIndex{46, 42}}) {
+    map.Set(hole, CellState::kNavigable);  // ... with floor seen between its specks.
+  }
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  // Everything seen closely but the desk.
+  SurfaceCoverage coverage;
+  for (const auto& [x, y, theta] : {std::tuple{10, 10, 0.0}, std::tuple{10, 10, M_PI / 2},
+                                     std::tuple{10, 10, M_PI}, std::tuple{10, 10, -M_PI / 2},
+                                     std::tuple{70, 50, 0.0}, std::tuple{70, 50, M_PI / 2},
+                                     std::tuple{70, 10, 0.0}, std::tuple{70, 10, -M_PI / 2},
+                                     std::tuple{10, 50, M_PI}, std::tuple{10, 50, M_PI / 2},
+                                     std::tuple{40, 55, M_PI / 2}, std::tuple{40, 5, -M_PI / 2}}) {
+    GridMap walls_only = map;
+    Fill(&walls_only, 30, 40, 49, 45, CellState::kNavigable);
+    coverage.Observe(walls_only, {map.CenterX(x), map.CenterY(y), theta});
+  }
+  const TargetDecision d = TargetPlanner(TargetPlannerConfig{}, kRes)
+                               .Plan(map, grid, {10, 10}, {10, 10}, &coverage, 0.0);
+  const auto desk = std::find_if(d.candidates.begin(), d.candidates.end(), [](const auto& c) {
+    return c.region_center.x >= 30 && c.region_center.x <= 49 && c.region_center.y >= 40 &&
+           c.region_center.y <= 45;
+  });
+  ASSERT_NE(desk, d.candidates.end());
+  EXPECT_EQ(desk->kind, TargetKind::kInspection);
+  EXPECT_FALSE(grid.Blocked(desk->viewpoint));
+  EXPECT_GE(desk->gain, TargetPlannerConfig{}.min_inspection_m);
 }
 
 TEST(SurfaceCoverage, AWallThatShiftsByOneCellStaysInspected) {

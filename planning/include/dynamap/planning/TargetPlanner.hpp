@@ -83,7 +83,9 @@ class TargetPlanner {
   // null (no inspection targets then). `squeeze`, when given, is the map inflated by the
   // squeeze radius (BuildSqueezeGrid): a region with no viewpoint reachable on `grid` takes
   // one reachable on it, since the path planner squeezes where the full radius leaves no
-  // way (a doorway whose open leaf was mapped a cell thick).
+  // way (a doorway whose open leaf was mapped a cell thick). Inspection viewpoints taken
+  // that way must stand free at the full radius: a surface is looked at from the room
+  // beyond a squeezed doorway, never from inside a squeeze.
   [[nodiscard]] TargetDecision Plan(const GridMap& map, const TraversalGrid& grid, GridIndex robot,
                                     GridIndex home, const SurfaceCoverage* coverage,
                                     double now_s, const TraversalGrid* squeeze = nullptr) const;
