@@ -272,6 +272,48 @@ TEST(Simulator, APersonWhoDoesNotYieldWalksIntoTheStandingRobot) {
   EXPECT_NEAR(simulator.person_wait_s(0), 0.0, 1e-9);
 }
 
+TEST(Simulator, ADoorIsNotShutOntoTheRobotStandingInItsDoorway) {
+  // The door's closed leaf runs through the robot's centre (x = 0); it is due to close at
+  // 1 s. Whoever shuts it waits until the robot has driven out of the doorway.
+  const World world = testing::MustParse(testing::WallWorldYaml(
+      8.0, "doors:\n  - {id: door, hinge: [0, -0.45], width: 0.9, closed_yaw_deg: 90, "
+           "open_yaw_deg: 180, open: true, schedule: [{t: 1, open: false}]}\n"));
+  Simulator simulator(world, RobotConfig{}, SmallRig(0.1), Proprioceptive(2));
+  (void)simulator.Advance(3.0);
+  EXPECT_EQ(simulator.collision_count(), 0);
+  EXPECT_NEAR(simulator.door_wait_s(0), 2.0, 0.01);
+  simulator.SetCommand({0, 0.5, 0.0});
+  (void)simulator.Advance(2.0);
+  simulator.SetCommand({0, 0.0, 0.0});
+  (void)simulator.Advance(1.0);
+  EXPECT_EQ(simulator.collision_count(), 0);
+  // It closed once the footprint was 0.1 m clear of the closed leaf, about 1 s later.
+  const double waited = simulator.door_wait_s(0);
+  EXPECT_GT(waited, 2.5);
+  EXPECT_LT(waited, 4.0);
+  EXPECT_FALSE(DoorOpenAt(world.doors[0], NanosToSeconds(simulator.now_ns()) - waited));
+}
+
+TEST(Simulator, AChairIsNotPutDownWhereTheRobotStands) {
+  // A chair due at 1 s to be moved to 0.3 m in front of the robot's centre.
+  const World world = testing::MustParse(testing::WallWorldYaml(
+      8.0, "furniture:\n  - {id: chair, pose: [3.0, 2.0, 0], size: [0.5, 0.5, 1.0], "
+           "moves: [{t: 1, pose: [0.3, 0.0, 0]}]}\n"));
+  Simulator simulator(world, RobotConfig{}, SmallRig(0.1), Proprioceptive(2));
+  (void)simulator.Advance(2.0);
+  EXPECT_EQ(simulator.collision_count(), 0);
+  EXPECT_NEAR(simulator.furniture_wait_s(0), 1.0, 0.01);
+  simulator.SetCommand({0, -0.5, 0.0});  // The robot backs away from where it goes ...
+  (void)simulator.Advance(2.0);
+  simulator.SetCommand({0, 0.0, 0.0});
+  (void)simulator.Advance(1.0);
+  EXPECT_EQ(simulator.collision_count(), 0);
+  // ... and it is put down once the footprint is 0.1 m clear of it (robot x < -0.41 m).
+  EXPECT_GT(simulator.furniture_wait_s(0), 1.5);
+  EXPECT_LT(simulator.furniture_wait_s(0), 3.5);
+  EXPECT_LT(simulator.TruePose().x, -0.5);
+}
+
 TEST(Simulator, PeopleAreLabelledDynamicAndMovedChairsOnlyBeforeTheirMove) {
   World world = testing::MustParse(testing::WallWorldYaml(
       4.0,

@@ -38,10 +38,10 @@ Contact CollisionWorld::CheckSolids(const std::vector<Solid>& solids, const Eige
 }
 
 Contact CollisionWorld::Check(const Eigen::Vector2d& centre, double radius, double t_s,
-                              const std::vector<double>* person_clock_s) const {
+                              const ScheduleClocks* clocks) const {
   Contact best = CheckSolids(fixed_, centre, radius);
   const Contact moving =
-      CheckSolids(MovingSolidsAt(*world_, t_s, person_clock_s), centre, radius);
+      CheckSolids(MovingSolidsAt(*world_, t_s, clocks), centre, radius);
   if (moving.clearance_m < best.clearance_m) best = moving;
   for (const Hole& h : world_->holes) {
     const Eigen::Vector2d mid = (h.min + h.max) / 2.0;

@@ -29,7 +29,9 @@ Simulator::Simulator(World world, RobotConfig robot, Rig rig, SimulatorConfig co
       collision_world_(world_, robot_.height_m),
       step_ns_(std::max<std::int64_t>(1000, SecondsToNanos(config.physics_step_s))),
       frame_index_(rig_.kinects.size(), 0),
-      person_clock_s_(world_.people.size(), 0.0),
+      clocks_{std::vector<double>(world_.people.size(), 0.0),
+              std::vector<double>(world_.doors.size(), 0.0),
+              std::vector<double>(world_.furniture.size(), 0.0)},
       yielding_(world_.people.size()) {
   if (config_.render_depth && !rig_.kinects.empty()) {
     renderer_ = std::make_unique<DepthRenderer>(world_, config_.render_threads);
@@ -73,9 +75,9 @@ void Simulator::Step(SimOutput* out) {
   // robot pressed against a door post while turning towards its path can turn free.
   const Pose2D proposed = base_.Propose(dt);
   const double radius = robot_.footprint_radius_m;
-  const Contact now = collision_world_.Check({pose0.x, pose0.y}, radius, t1_s, &person_clock_s_);
+  const Contact now = collision_world_.Check({pose0.x, pose0.y}, radius, t1_s, &clocks_);
   const Contact next =
-      collision_world_.Check({proposed.x, proposed.y}, radius, t1_s, &person_clock_s_);
+      collision_world_.Check({proposed.x, proposed.y}, radius, t1_s, &clocks_);
   const bool moving = std::abs(proposed.x - pose0.x) + std::abs(proposed.y - pose0.y) > 1e-12;
   const bool blocked = moving && next.clearance_m < 0.0 && next.clearance_m < now.clearance_m;
   const bool touching = now.clearance_m < 0.0 || (moving && next.clearance_m < 0.0);
@@ -102,6 +104,7 @@ void Simulator::Step(SimOutput* out) {
   now_ns_ = t1;
   const Pose2D pose1 = base_.pose_world();
   AdvancePeople(dt, pose1);
+  AdvanceDoorsAndFurniture(dt, pose1);
 
   if (renderer_) {
     const int sensors = static_cast<int>(rig_.kinects.size());
@@ -140,7 +143,7 @@ void Simulator::AdvancePeople(double dt_s, const Pose2D& robot_world) {
   const double now_s = NanosToSeconds(now_ns_);
   for (std::size_t i = 0; i < world_.people.size(); ++i) {
     const Person& person = world_.people[i];
-    double& clock = person_clock_s_[i];
+    double& clock = clocks_.people_s[i];
     Yielding& y = yielding_[i];
     if (!person.yields) {
       clock += dt_s;
@@ -180,11 +183,35 @@ void Simulator::AdvancePeople(double dt_s, const Pose2D& robot_world) {
   }
 }
 
+void Simulator::AdvanceDoorsAndFurniture(double dt_s, const Pose2D& robot_world) {
+  const Eigen::Vector2d robot(robot_world.x, robot_world.y);
+  const double radius = robot_.footprint_radius_m + config_.schedule_clearance_m;
+  const auto overlaps = [&](const std::vector<Solid>& solids) {
+    return collision_world_.CheckSolids(solids, robot, radius).clearance_m < 0.0;
+  };
+  for (std::size_t i = 0; i < world_.doors.size(); ++i) {
+    const Door& door = world_.doors[i];
+    double& clock = clocks_.doors_s[i];
+    const bool next = DoorOpenAt(door, clock + dt_s);
+    if (next != DoorOpenAt(door, clock) && overlaps(DoorSolids(door, next))) continue;
+    clock += dt_s;
+  }
+  for (std::size_t i = 0; i < world_.furniture.size(); ++i) {
+    const Furniture& furniture = world_.furniture[i];
+    double& clock = clocks_.furniture_s[i];
+    const Pose2D now = FurniturePoseAt(furniture, clock);
+    const Pose2D next = FurniturePoseAt(furniture, clock + dt_s);
+    const bool moves = next.x != now.x || next.y != now.y || next.theta != now.theta;
+    if (moves && overlaps(FurnitureSolids(furniture, next))) continue;
+    clock += dt_s;
+  }
+}
+
 SimFrame Simulator::Capture(int sensor, std::int64_t capture_ns, const Pose2D& pose_world) {
   if (moving_solids_ns_ != capture_ns) {
     // People as they stand now (within one physics step of the capture instant).
     renderer_->SetMovingSolids(
-        MovingSolidsAt(world_, NanosToSeconds(capture_ns), &person_clock_s_));
+        MovingSolidsAt(world_, NanosToSeconds(capture_ns), &clocks_));
     moving_solids_ns_ = capture_ns;
   }
   const KinectMount& mount = rig_.kinects[sensor];

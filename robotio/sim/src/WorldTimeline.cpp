@@ -197,20 +197,24 @@ std::vector<Solid> FixedSolids(const World& world) {
   return solids;
 }
 
-std::vector<Solid> MovingSolidsAt(const World& world, double t_s,
-                                  const std::vector<double>* person_clock_s) {
+std::vector<Solid> MovingSolidsAt(const World& world, double t_s, const ScheduleClocks* clocks) {
+  const auto clock = [&](const std::vector<double> ScheduleClocks::*member, std::size_t i) {
+    return clocks != nullptr && i < (clocks->*member).size() ? (clocks->*member)[i] : t_s;
+  };
   std::vector<Solid> solids;
-  for (const Door& d : world.doors) {
-    const bool open = DoorOpenAt(d, t_s);
+  for (std::size_t i = 0; i < world.doors.size(); ++i) {
+    const Door& d = world.doors[i];
+    const bool open = DoorOpenAt(d, clock(&ScheduleClocks::doors_s, i));
     const bool dynamic = open != DoorOpenAt(d, world.duration_s);
     for (Solid s : DoorSolids(d, open)) {
       s.dynamic = dynamic;
       solids.push_back(s);
     }
   }
-  for (const Furniture& f : world.furniture) {
+  for (std::size_t i = 0; i < world.furniture.size(); ++i) {
+    const Furniture& f = world.furniture[i];
     if (f.moves.empty()) continue;
-    const Pose2D pose = FurniturePoseAt(f, t_s);
+    const Pose2D pose = FurniturePoseAt(f, clock(&ScheduleClocks::furniture_s, i));
     const bool dynamic = !SamePose(pose, FurniturePoseAt(f, world.duration_s));
     for (Solid s : FurnitureSolids(f, pose)) {
       s.dynamic = dynamic;
@@ -218,9 +222,7 @@ std::vector<Solid> MovingSolidsAt(const World& world, double t_s,
     }
   }
   for (std::size_t i = 0; i < world.people.size(); ++i) {
-    const double t = person_clock_s != nullptr && i < person_clock_s->size()
-                         ? (*person_clock_s)[i]
-                         : t_s;
+    const double t = clock(&ScheduleClocks::people_s, i);
     for (const Solid& s : PersonSolids(world.people[i], PersonAt(world.people[i], t))) {
       solids.push_back(s);
     }

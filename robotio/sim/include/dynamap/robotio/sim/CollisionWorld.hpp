@@ -20,18 +20,18 @@ class CollisionWorld {
   // robot_height_m: solids starting above it pass over the robot.
   CollisionWorld(const World& world, double robot_height_m);
 
-  // Centre in the world frame; radius of the circular footprint; people at their own
-  // schedule times when `person_clock_s` is given (see MovingSolidsAt).
+  // Centre in the world frame; radius of the circular footprint; moving objects at their
+  // own schedule times when `clocks` is given (see MovingSolidsAt).
   [[nodiscard]] Contact Check(const Eigen::Vector2d& centre, double radius, double t_s,
-                              const std::vector<double>* person_clock_s = nullptr) const;
+                              const ScheduleClocks* clocks = nullptr) const;
   // Clearance between the footprint and one person standing as `state` says.
   [[nodiscard]] double PersonClearance(const Person& person, const PersonState& state,
                                        const Eigen::Vector2d& centre, double radius) const;
-
- private:
+  // The same against any solids (a door in its next state, furniture where it goes).
   [[nodiscard]] Contact CheckSolids(const std::vector<Solid>& solids, const Eigen::Vector2d& c,
                                     double radius) const;
 
+ private:
   const World* world_;
   double robot_height_m_;
   std::vector<Solid> fixed_;

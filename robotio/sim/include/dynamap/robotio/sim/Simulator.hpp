@@ -39,6 +39,9 @@ struct SimulatorConfig {
                                    // then it walks back the way it came, to
   double give_way_clearance_m = 1.5;  // m from the robot, and stands there for the patience
                                       // time before it tries again (no deadlock in a door).
+  double schedule_clearance_m = 0.1;  // m from the footprint: a door is not shut or opened,
+                                      // a chair not put down nearer to the robot than this;
+                                      // its schedule waits until the robot has moved on.
 };
 
 struct CollisionEvent {
@@ -82,11 +85,19 @@ class Simulator {
   [[nodiscard]] int collision_count() const { return collisions_; }
   // Where person i (World::people order) is now.
   [[nodiscard]] PersonState person_state(std::size_t i) const {
-    return PersonAt(world_.people.at(i), person_clock_s_.at(i));
+    return PersonAt(world_.people.at(i), clocks_.people_s.at(i));
   }
   // Seconds person i's schedule is behind: time spent waiting for the robot or giving way.
   [[nodiscard]] double person_wait_s(std::size_t i) const {
-    return NanosToSeconds(now_ns_) - person_clock_s_.at(i);
+    return NanosToSeconds(now_ns_) - clocks_.people_s.at(i);
+  }
+  // Seconds door i's schedule is behind: time it waited to close or open onto the robot.
+  [[nodiscard]] double door_wait_s(std::size_t i) const {
+    return NanosToSeconds(now_ns_) - clocks_.doors_s.at(i);
+  }
+  // Seconds furniture i's schedule is behind: time its move waited for the robot.
+  [[nodiscard]] double furniture_wait_s(std::size_t i) const {
+    return NanosToSeconds(now_ns_) - clocks_.furniture_s.at(i);
   }
   [[nodiscard]] std::uint64_t rays_cast() const;
 
@@ -95,6 +106,10 @@ class Simulator {
   // Walks every person on by dt, except those who yield and would come too near the robot
   // standing at `robot_world`.
   void AdvancePeople(double dt_s, const Pose2D& robot_world);
+  // Moves the doors' and the furniture's schedules on by dt, except where the next state
+  // (a door shut or opened, a chair put down) would overlap the robot at `robot_world`:
+  // whoever closes a door or moves a chair waits until the robot has gone.
+  void AdvanceDoorsAndFurniture(double dt_s, const Pose2D& robot_world);
   [[nodiscard]] SimFrame Capture(int sensor, std::int64_t capture_ns, const Pose2D& pose_world);
 
   World world_;
@@ -112,7 +127,7 @@ class Simulator {
   std::vector<std::int64_t> frame_index_;  // Next frame number per Kinect.
   std::vector<SimFrame> pending_;          // Captured, not yet delivered.
   std::int64_t moving_solids_ns_ = -1;     // Time the renderer's moving geometry shows.
-  std::vector<double> person_clock_s_;    // Each person's own schedule time.
+  ScheduleClocks clocks_;                  // Each moving object's own schedule time.
   struct Yielding {
     double waited_s = 0.0;       // Waiting for the robot without a break.
     bool giving_way = false;     // Walking back the way it came.

@@ -41,11 +41,20 @@ struct PersonState {
 [[nodiscard]] Solid WallSolid(const World& world, std::size_t i);
 // Walls, steps and furniture that never moves: the same for the whole run.
 [[nodiscard]] std::vector<Solid> FixedSolids(const World& world);
-// Doors, furniture with moves and people at time t_s, labelled against world.duration_s.
-// `person_clock_s`, when given, holds each person's own schedule time (behind t_s by the
-// time it spent waiting for the robot); otherwise every person is at t_s.
+// Each moving object's own schedule time, behind the mission clock by the time it waited
+// for the robot: a person that would walk into it, a door that would close or open onto
+// it, a piece of furniture that would be put where it stands. Indexed like World::people,
+// World::doors and World::furniture; an object without an entry is at the mission time.
+struct ScheduleClocks {
+  std::vector<double> people_s;
+  std::vector<double> doors_s;
+  std::vector<double> furniture_s;
+};
+
+// Doors, furniture with moves and people at time t_s, labelled against world.duration_s;
+// each at its own schedule time when `clocks` is given.
 [[nodiscard]] std::vector<Solid> MovingSolidsAt(const World& world, double t_s,
-                                                const std::vector<double>* person_clock_s = nullptr);
+                                                const ScheduleClocks* clocks = nullptr);
 // Doors and movable furniture in the placement they end the run in (static map truth).
 [[nodiscard]] std::vector<Solid> FinalMovableSolids(const World& world);
 
