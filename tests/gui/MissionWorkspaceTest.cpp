@@ -120,12 +120,12 @@ class MissionWorkspaceTest : public QObject {
   void TheTargetStrategyChosenGoesIntoTheMission() {
     MissionWorkspace workspace;
     MissionPanel* panel = workspace.Panel();
-    QCOMPARE(panel->BuildConfig().planning.targets.strategy, std::string("gain"));
+    QCOMPARE(panel->BuildConfig().planning.targets.strategy, std::string("tour"));
     auto* targets = panel->findChild<QComboBox*>(QStringLiteral("mission_targets"));
     QVERIFY(targets != nullptr && targets->isVisibleTo(panel));
     QCOMPARE(targets->count(), 3);
-    targets->setCurrentIndex(targets->findData(QStringLiteral("tour")));
-    QCOMPARE(panel->BuildConfig().planning.targets.strategy, std::string("tour"));
+    targets->setCurrentIndex(targets->findData(QStringLiteral("gain")));
+    QCOMPARE(panel->BuildConfig().planning.targets.strategy, std::string("gain"));
     panel->SetTargetStrategy(QStringLiteral("nearest-frontier"));
     QCOMPARE(targets->currentText(), QStringLiteral("Nearest frontier (baseline)"));
     QCOMPARE(panel->BuildConfig().planning.targets.strategy, std::string("nearest-frontier"));

@@ -178,12 +178,12 @@ QWidget* MissionPanel::MakeSetupGroup() {
   form->addRow(tr("Poses"), poses_);
   targets_ = new QComboBox;
   targets_->setObjectName(QStringLiteral("mission_targets"));
-  targets_->addItem(tr("Gain over path cost"), QStringLiteral("gain"));
   targets_->addItem(tr("Tour through all targets"), QStringLiteral("tour"));
+  targets_->addItem(tr("Gain over path cost"), QStringLiteral("gain"));
   targets_->addItem(tr("Nearest frontier (baseline)"), QStringLiteral("nearest-frontier"));
-  targets_->setToolTip(tr("How the next target is chosen: the best gain over path cost, the "
-                          "first stop of the shortest tour through all targets back to the "
-                          "start, or Yamauchi's nearest frontier without inspection"));
+  targets_->setToolTip(tr("How the next target is chosen: the first stop of the shortest "
+                          "tour through all targets back to the start, the best gain over "
+                          "path cost, or Yamauchi's nearest frontier without inspection"));
   SetTargetStrategy(QString::fromStdString(planning::TargetPlannerConfig{}.strategy));
   KeepNarrow(targets_);
   form->addRow(tr("Targets"), targets_);

@@ -15,7 +15,7 @@
 namespace dynamap::planning {
 
 struct TargetPlannerConfig {
-  std::string strategy = "gain";         // "gain": gain over path cost; "tour": first stop
+  std::string strategy = "tour";         // "gain": gain over path cost; "tour": first stop
                                          // of the shortest tour through all targets to the
                                          // start (TargetTour.hpp); "nearest-frontier":
                                          // Yamauchi's closest reachable frontier (baseline).
