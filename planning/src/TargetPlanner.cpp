@@ -367,9 +367,17 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
         continue;
       }
       // Well inside the inspection distance, so the surface counts once seen from there.
+      // The cell looked at is the target's region centre, which failures blacklist: a
+      // blacklisted one is passed over for the next (office seed 5 looked at a desk's
+      // corner for 280 s, each look a failure, while only the centroid was checked).
       Viewpoint vp;
       GridIndex anchor = region.center;
+      bool blacklisted = false;
       for (const GridIndex& a : SpreadCells(map, region, kInspectionAnchors)) {
+        if (blacklist_.IsBlacklisted(a, now_s)) {
+          blacklisted = true;
+          continue;
+        }
         vp = FindViewpoint(map, cost_to_go, a, 0.0, 0.8 * inspect_cells, Excluded{});
         if (!vp.found && squeezed_costs() != nullptr) {
           vp = FindViewpoint(map, free_standing_squeezed_costs(), a, 0.0, 0.8 * inspect_cells,
@@ -378,7 +386,10 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
         anchor = a;
         if (vp.found) break;
       }
-      if (!vp.found) continue;
+      if (!vp.found) {
+        if (blacklisted) ++decision.blacklisted_regions;
+        continue;
+      }
       TargetCandidate c;
       c.kind = TargetKind::kInspection;
       c.viewpoint = vp.cell;

@@ -461,6 +461,26 @@ TEST(TargetPlanner, ADeskMappedAsASpeckledBlockIsLookedAtAlongItsEdge) {
   EXPECT_EQ(desk->kind, TargetKind::kInspection);
   EXPECT_FALSE(grid.Blocked(desk->viewpoint));
   EXPECT_GE(desk->gain, TargetPlannerConfig{}.min_inspection_m);
+
+  // Looking at that cell keeps failing: it is blacklisted, and another of the desk's
+  // cells is looked at instead, until every one tried has failed.
+  TargetPlanner planner(TargetPlannerConfig{}, kRes);
+  const auto on_desk = [](const TargetCandidate& c) {
+    return c.region_center.x >= 30 && c.region_center.x <= 49 && c.region_center.y >= 40 &&
+           c.region_center.y <= 45;
+  };
+  std::vector<GridIndex> looked_at;
+  for (int round = 0; round < 10; ++round) {
+    const TargetDecision next = planner.Plan(map, grid, {10, 10}, {10, 10}, &coverage, 1.0);
+    const auto it = std::find_if(next.candidates.begin(), next.candidates.end(), on_desk);
+    if (it == next.candidates.end()) break;
+    for (const GridIndex& earlier : looked_at) EXPECT_NE(it->region_center, earlier);
+    looked_at.push_back(it->region_center);
+    planner.ReportFailure(*it, 1.0);
+    planner.ReportFailure(*it, 1.0);
+  }
+  EXPECT_GE(looked_at.size(), 2u);
+  EXPECT_LT(looked_at.size(), 10u);
 }
 
 TEST(SurfaceCoverage, AWallThatShiftsByOneCellStaysInspected) {
