@@ -428,7 +428,8 @@ void RegisterMapCommand(CLI::App& app) {
       ->check(CLI::Range(0.005, 2.0))
       ->capture_default_str();
   CLI::Option* max_range =
-      map->add_option("--max-range", options->max_range_m, "Insertion range along the ray (m)")
+      map->add_option("--max-range", options->max_range_m,
+                      "Insertion range: depth along the Kinect's optical axis (m)")
       ->check(CLI::Range(0.1, 100.0))
       ->capture_default_str();
   map->add_option("--eval-stride", options->eval_stride,

@@ -50,7 +50,7 @@ void PointAccuracyCounter::Add(const robotio::DepthFrame& depth,
       if (label == 0 || d == 0 || d < min_mm) continue;
       const float z = static_cast<float>(d) * 0.001f;
       const Eigen::Vector3f ray(static_cast<float>((u - k.cx) / k.fx), static_cast<float>((v - k.cy) / k.fy), 1.0f);
-      // The map's range limit is along the ray, as in DepthToRays.
+      // The map's range limit is a depth, as in DepthToRays.
       if (d > max_mm) continue;
       const Eigen::Vector3f p = T * (ray * z);
       octomap::OcTreeKey key;

@@ -123,9 +123,12 @@ DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
       const bool hit = d <= max_mm;
       const Eigen::Vector3f direction(static_cast<float>((u - k.cx) / k.fx),
                                       static_cast<float>((v - k.cy) / k.fy), 1.0f);
-      // Beyond max range: free space up to max range along the ray, no endpoint.
+      // Beyond max range: free space up to the max-range depth, no endpoint. The cut is at
+      // the same depth as the farthest hit, so every voxel a hit can reach is one a longer
+      // ray sees free (a cut at that range along the ray left a shell beside the image axis
+      // that was only ever hit: whatever passed through it stayed in the map).
       const float measured_z = static_cast<float>(d) * 0.001f;
-      const float z = hit ? measured_z : max_z / direction.norm();
+      const float z = hit ? measured_z : max_z;
       rays.ends.push_back(T * (direction * z));
       rays.hit.push_back(hit);
       // A cut ray carries the incidence and range of the surface it measured beyond.

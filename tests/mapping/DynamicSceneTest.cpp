@@ -78,6 +78,38 @@ TEST(DynamicSceneTest, WithoutTheEdgeClearanceRaysAlongAThinLeafSendItToTheDynam
   EXPECT_TRUE(map.IsDynamicOccupied(leaf));
 }
 
+// A person stands 3.87 m deep, 25 degrees beside the camera's axis (4.27 m along the ray),
+// then walks off; the wall behind lies beyond the 4 m max range.
+DualMap PersonAtTheEdgeOfRangeWalksOff() {
+  DualMap map{MappingConfig{}};
+  testing::SyntheticScene scene;
+  scene.wall_x = 8.0f;
+  scene.boxes = {{{3.87f, 1.6f, -0.5f}, {4.15f, 1.95f, 1.2f}}};
+  const robotio::Intrinsics k = robotio::Intrinsics{}.Scaled(160, 120);
+  const robotio::KinectMount mount = testing::LevelMount(k);
+  const Eigen::Vector3f origin(0.0f, 0.0f, 0.3f);
+  for (int scan = 0; scan < 5; ++scan) {
+    map.InsertDepthFrame(testing::RenderDepth(scene, origin, 0.0f, k), mount,
+                         testing::BasePose(origin, 0.0f));
+  }
+  scene.boxes.clear();
+  for (int scan = 0; scan < 20; ++scan) {
+    map.InsertDepthFrame(testing::RenderDepth(scene, origin, 0.0f, k), mount,
+                         testing::BasePose(origin, 0.0f));
+  }
+  return map;
+}
+
+TEST(DynamicSceneTest, APersonAtTheEdgeOfRangeBesideTheAxisLeavesTheStaticMap) {
+  const DualMap map = PersonAtTheEdgeOfRangeWalksOff();
+  // The person's face: a hit by depth, which the rays cut at max range must see free again
+  // (cut at 4 m along the ray, they stopped 3.63 m deep there and it stayed static).
+  const Eigen::Vector3f face(3.88f, 1.77f, 0.32f);
+  EXPECT_EQ(map.StaticState(face), VoxelState::kFree);
+  // Beyond the max-range depth nothing is known.
+  EXPECT_EQ(map.StaticState({4.12f, 0.02f, 0.32f}), VoxelState::kUnknown);
+}
+
 TEST(DynamicSceneTest, RegularUpdateKeepsThePersonInTheMap) {
   const DualMap map = WalkThrough(UpdateMode::kRegular);
   EXPECT_TRUE(map.IsStaticOccupied({1.62f, 0.42f, 0.32f}));

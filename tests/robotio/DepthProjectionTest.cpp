@@ -96,19 +96,25 @@ TEST(DepthProjection, BasePointsUseTheMountPose) {
   EXPECT_NEAR(points[0].z(), 0.6, 1e-6);
 }
 
-TEST(DepthProjection, RaysBeyondMaxRangeAreCutAndMarkedAsMisses) {
+TEST(DepthProjection, RaysBeyondMaxRangeAreCutAtTheMaxRangeDepthAndMarkedAsMisses) {
   DepthFrame frame;
-  frame.width = 2;
+  frame.width = 3;
   frame.height = 1;
-  frame.intrinsics = Intrinsics{2, 1, 100.0, 100.0, 0.5, 0.0};
-  frame.depth_mm = {1500, 6000};
+  // Pixels 0 and 2 look 45 degrees beside the axis (|u - cx| = fx), pixel 1 along it.
+  frame.intrinsics = Intrinsics{3, 1, 1.0, 1.0, 1.0, 0.0};
+  frame.depth_mm = {3900, 1500, 6000};
   KinectMount mount;
   mount.max_range_m = 4.0;
   const DepthRays rays = DepthToRays(frame, mount, Eigen::Isometry3d::Identity());
-  ASSERT_EQ(rays.ends.size(), 2u);
+  ASSERT_EQ(rays.ends.size(), 3u);
   EXPECT_TRUE(rays.hit[0]);
-  EXPECT_FALSE(rays.hit[1]);
-  EXPECT_NEAR((rays.ends[1] - rays.origin).norm(), 4.0, 1e-5);
+  EXPECT_TRUE(rays.hit[1]);
+  EXPECT_FALSE(rays.hit[2]);
+  // Max range is a depth: a hit 3.9 m deep lies 5.5 m along its ray, and a longer ray
+  // beside the axis is cut 4 m deep, past that hit, not 4 m along the ray.
+  EXPECT_NEAR((rays.ends[0] - rays.origin).norm(), 3.9 * std::sqrt(2.0), 1e-4);
+  EXPECT_NEAR(rays.ends[2].z(), 4.0, 1e-5);
+  EXPECT_NEAR((rays.ends[2] - rays.origin).norm(), 4.0 * std::sqrt(2.0), 1e-4);
 }
 
 // A 5x5 image of the plane z = 2 + slope * y (optical frame): tilted by atan(slope)

@@ -16,8 +16,9 @@ enum class UpdateMode {
 
 struct MappingConfig {
   double resolution_m = 0.05;  // m, edge of a leaf voxel.
-  // m, measured along the ray from the sensor: longer rays clear free space up to this
-  // distance and set no hit.
+  // m, the depth (along the Kinect's optical axis, where its noise grows) up to which a
+  // return is a hit; farther returns clear free space up to this depth and set no hit. For
+  // point clouds without a camera (InsertPointCloud) the distance from the origin.
   double max_range_m = 4.0;
   UpdateMode update = UpdateMode::kDynamic;  // Inverse sensor model (YAML: dynamic|regular).
   double prob_low = 0.4;   // "Low" of Tables 4.1/4.2 (and Algorithm 2's free), in (0, 0.5).

@@ -24,7 +24,8 @@ using PointList = std::vector<Eigen::Vector3f>;
 [[nodiscard]] PointList DepthToBasePoints(const DepthFrame& frame, const KinectMount& mount);
 
 // Every pixel with a measurement as a ray: origin and end point in the target frame,
-// `hit` false for returns beyond max range (the ray is cut at max range, no endpoint).
+// `hit` false for returns beyond max range (a depth, along the optical axis z, as the Kinect
+// measures it: the ray is cut where its depth reaches max range, no endpoint).
 struct DepthRays {
   Eigen::Vector3f origin;
   PointList ends;
