@@ -305,10 +305,11 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
         }
         if (!vp.found) return;
         gain = UnknownSeen(map, vp.cell, cone);
-        // The nearest frontier has no gain to weigh, so a viewpoint that sees none of the
-        // unknown beyond it (the centre glimpsed past a door jamb) would be driven to, looked
-        // from and blacklisted: the cheapest viewpoint that sees enough stands in for it.
-        if (!nearest || gain >= config_.min_gain_m2) return;
+        // A viewpoint that sees next to none of the unknown beyond it (the centre glimpsed
+        // past a door jamb) would be driven to, looked from and blacklisted by the nearest
+        // frontier, which weighs no gain, and would drop the region for gain and tour, which
+        // do: the cheapest viewpoint that sees enough stands in for it.
+        if (gain >= config_.min_gain_m2) return;
         wanting.cells.push_back(vp.cell);
         vp.found = false;
       }

@@ -107,6 +107,28 @@ TEST(TargetPlanner, NearestFrontierLooksFromWhereTheUnknownBeyondIsSeen) {
   EXPECT_LT(blind.chosen.viewpoint.x, d.chosen.viewpoint.x);  // The seeing one is nearer the door.
 }
 
+TEST(TargetPlanner, EveryStrategyLooksIntoARoomGlimpsedPastAJamb) {
+  // The corridor and doorway above: the first viewpoint found sees the room through a ray
+  // or two. Gain and tour weigh what a viewpoint sees, and dropped the room for it, so
+  // with nothing else unknown the map was done with a room never entered.
+  GridMap map(80, 60, kRes, CellState::kUnknown);
+  Fill(&map, 0, 9, 79, 22, CellState::kObstacle);
+  Fill(&map, 1, 10, 78, 19, CellState::kNavigable);
+  Fill(&map, 40, 20, 44, 22, CellState::kNavigable);
+  const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());
+  for (const char* strategy : {"gain", "tour"}) {
+    TargetPlannerConfig config = NoInspection();
+    config.strategy = strategy;
+    config.viewpoint_radius_m = 2.5;
+    config.min_gain_m2 = 1.0;
+    const TargetDecision d =
+        TargetPlanner(config, kRes).Plan(map, grid, {5, 15}, {5, 15}, nullptr, 0.0);
+    ASSERT_EQ(d.kind, TargetKind::kFrontier) << strategy;
+    EXPECT_GE(d.chosen.gain, 1.0) << strategy;
+    EXPECT_FALSE(grid.Blocked(d.chosen.viewpoint)) << strategy;
+  }
+}
+
 TEST(TargetPlanner, BlacklistedTargetsAreSkippedUntilTheyExpire) {
   const GridMap map = RoomWithOpenings();
   const TraversalGrid grid = BuildTraversalGrid(map, SmallRobot());

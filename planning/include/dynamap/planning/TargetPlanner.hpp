@@ -28,7 +28,7 @@ struct TargetPlannerConfig {
                                          // the Kinects see only beyond their floor blind
                                          // radius (the runtime sets it from the rig).
   double min_gain_m2 = 0.2;              // m², frontier targets revealing less are not worth it
-                                         // (the nearest frontier tries further viewpoints).
+                                         // (up to 12 further viewpoints are tried first).
   double path_cost_offset_m = 1.0;       // m added to path cost in score = gain / (cost + offset),
                                          // so targets next to the robot do not win by ~1/0.
   bool inspection = true;                // Also plan inspection targets.
