@@ -1,6 +1,7 @@
 #include "dynamap/mapping/SlamLoop.hpp"
 
 #include <octomap/octomap_types.h>
+#include <octomap/octomap_utils.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -77,6 +78,7 @@ SlamConfig ParseSlamConfig(robotio::ConfigNode& node) {
   node.Read("max_correction_rad", &config.max_correction_rad, 0.0, 3.2);
   node.Read("max_correction_per_rad", &config.max_correction_per_rad, 0.0, 5.0);
   node.Read("map_reference_radius_m", &config.map_reference_radius_m, 0.5, 50.0);
+  node.Read("map_reference_min_probability", &config.map_reference_min_probability, 0.5, 0.99);
   node.Read("reference_refresh_m", &config.reference_refresh_m, 0.0, 10.0);
   node.Read("reference_max_age_s", &config.reference_max_age_s, 0.0, 60.0);
   node.Read("registration_voxel_m", &config.registration_voxel_m, 0.0, 1.0);
@@ -124,8 +126,10 @@ robotio::PointList SlamLoop::MapReference(const robotio::Pose2D& around) const {
                              -100.0f);
   const octomap::point3d max(static_cast<float>(around.x) + r, static_cast<float>(around.y) + r,
                              100.0f);
+  const float min_log_odds =
+      octomap::logodds(static_cast<float>(config_.map_reference_min_probability));
   for (auto it = tree.begin_leafs_bbx(min, max), end = tree.end_leafs_bbx(); it != end; ++it) {
-    if (!tree.IsStaticOccupied(*it)) continue;
+    if (!tree.IsStaticOccupied(*it) || it->StaticLogOdds() < min_log_odds) continue;
     const octomap::point3d c = it.getCoordinate();
     points.emplace_back(c.x(), c.y(), c.z());
   }

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include <octomap/octomap_utils.h>
+
 #include "dynamap/mapping/MotionModel.hpp"
 #include "dynamap/mapping/SlamLoop.hpp"
 #include "dynamap/mapping/TrajectoryEvaluation.hpp"
@@ -201,6 +203,57 @@ TEST(SlamLoop, KeepsTheMapTargetUntilTheRobotMovesOrItAges) {
     EXPECT_TRUE(std::hypot(b.x - a.x, b.y - a.y) >= 0.5 || age_s >= 1.0 - 1e-6)
         << "scans " << rebuilt[k - 1] << " and " << rebuilt[k];
   }
+}
+
+// Feeds the first `count` scans of the drive to `slam`.
+void FeedScans(const OfficeDrive& drive, std::size_t count, SlamLoop* slam) {
+  for (std::size_t s = 0; s < count && s < drive.scans.size(); ++s) {
+    std::vector<robotio::DepthFrame> group;
+    std::vector<robotio::Pose2D> odometry_poses;
+    for (std::size_t i : drive.scans[s]) {
+      group.push_back(drive.frames[i]);
+      odometry_poses.push_back(PoseAt(drive.dead_reckoning, drive.frames[i].stamp_ns));
+    }
+    slam->ProcessScan(group, odometry_poses);
+  }
+}
+
+// Voxels of `points` in `slam`'s map whose static probability is below `probability`.
+std::size_t CountBelow(const SlamLoop& slam, const robotio::PointList& points, double probability) {
+  std::size_t below = 0;
+  for (const auto& p : points) {
+    const DualOcTreeNode* node = slam.map().tree().search(p.x(), p.y(), p.z());
+    if (node == nullptr) {
+      ADD_FAILURE() << "no voxel at a map target point";
+      continue;
+    }
+    if (octomap::probability(node->StaticLogOdds()) < probability - 1e-4) ++below;
+  }
+  return below;
+}
+
+// The map target holds only voxels seen occupied more than once (by default): every voxel
+// it holds is at least 0.8 probable, while with 0.5 it also holds voxels hit only once (the
+// table's High, 0.7).
+TEST(SlamLoop, TheMapTargetLeavesOutVoxelsHitOnlyOnce) {
+  const OfficeDrive drive = DriveThroughTheOffice(false);
+  ASSERT_GT(drive.scans.size(), 40u);
+  SlamConfig config;
+  config.registration_voxel_m = 0.0;  // Voxel centres as they are.
+  SlamLoop confirmed(config, CoarseMapping(), drive.rig);
+  FeedScans(drive, 40, &confirmed);
+  config.map_reference_min_probability = 0.5;
+  SlamLoop every(config, CoarseMapping(), drive.rig);
+  FeedScans(drive, 40, &every);
+
+  const robotio::PointList all = every.MapReference(every.pose());
+  const robotio::PointList held = confirmed.MapReference(confirmed.pose());
+  ASSERT_GT(all.size(), 500u);
+  EXPECT_GT(CountBelow(every, all, 0.8), 0u);
+  EXPECT_EQ(CountBelow(every, all, 0.5), 0u);
+  EXPECT_EQ(CountBelow(confirmed, held, 0.8), 0u);
+  EXPECT_LT(held.size(), all.size());
+  EXPECT_GT(held.size(), all.size() / 2);
 }
 
 }  // namespace

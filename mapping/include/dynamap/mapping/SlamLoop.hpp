@@ -48,6 +48,13 @@ struct SlamConfig {
   // along it). 0 applies the whole correction.
   double degenerate_eigen_ratio = 0.05;
   double map_reference_radius_m = 5.0;  // m, map voxels this close (x/y) form the target.
+  // Static occupancy probability a voxel needs to be in the map target (at least the
+  // mapping's occupancy threshold). One hit from unknown gives the table's High (0.7): at
+  // 0.8 a voxel must have been hit again, so the stray points one scan wrote from a
+  // slightly wrong pose do not pull the next registrations towards them. With 0.5 (every
+  // occupied voxel) the office tour's ATE was 0.165 m and a small-office mission's 0.113 m,
+  // worse than its odometry's 0.082 m; with 0.8, 0.124 and 0.058 m (docs/RESULTS.md).
+  double map_reference_min_probability = 0.8;
   // The map target (voxels, k-d tree, normals) is kept between scans, as KISS-ICP keeps
   // its local map, and rebuilt once the robot is this far from where it was built (the
   // scan must stay inside it) or it is this old. Rebuilt every 0.1 s, it followed the
@@ -115,10 +122,12 @@ class SlamLoop {
   [[nodiscard]] const robotio::Pose2D& pose() const { return pose_; }
   [[nodiscard]] const DualMap& map() const { return map_; }
   [[nodiscard]] const SlamConfig& config() const { return config_; }
+  // Occupied static voxel centres near `around` (x/y within map_reference_radius_m, static
+  // probability at least map_reference_min_probability), thinned to the registration voxel:
+  // the map target.
+  [[nodiscard]] robotio::PointList MapReference(const robotio::Pose2D& around) const;
 
  private:
-  // Occupied static voxel centres near `around`, thinned to the registration voxel.
-  [[nodiscard]] robotio::PointList MapReference(const robotio::Pose2D& around) const;
   // Rebuilds the map target when it is too far or too old; true when it did.
   bool UpdateMapTarget(const robotio::Pose2D& predicted, std::int64_t stamp_ns);
   struct Motion {
