@@ -13,7 +13,7 @@ namespace dynamap::planning {
 
 namespace {
 
-// Viewpoints tried per region by the nearest frontier before it gives the region up, and
+// Viewpoints tried per frontier region before it is given up (every strategy), and
 // how far (m) the next one must be from those that saw too little.
 constexpr int kMaxViewpointTries = 12;
 constexpr double kWantingRadiusM = 0.3;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include <octomap/octomap_utils.h>
 
@@ -105,20 +106,31 @@ struct SlamRun {
 };
 
 // Runs SLAM with `config` over the drive.
+// Scan `s` of the drive through `slam`; the scan's time and its odometry pose with it.
+struct ScanOutcome {
+  SlamStep step;
+  std::int64_t stamp_ns = 0;
+  robotio::Pose2D odometry;
+};
+ScanOutcome ProcessDriveScan(const OfficeDrive& drive, std::size_t s, SlamLoop* slam) {
+  std::vector<robotio::DepthFrame> group;
+  std::vector<robotio::Pose2D> odometry_poses;
+  for (std::size_t i : drive.scans[s]) {
+    group.push_back(drive.frames[i]);
+    odometry_poses.push_back(PoseAt(drive.dead_reckoning, drive.frames[i].stamp_ns));
+  }
+  return {slam->ProcessScan(group, odometry_poses), group.front().stamp_ns,
+          odometry_poses.front()};
+}
+
 SlamRun RunSlam(const OfficeDrive& drive, const SlamConfig& config) {
   SlamRun run;
   SlamLoop slam(config, CoarseMapping(), drive.rig);
   for (std::size_t s = 0; s < drive.scans.size(); ++s) {
-    std::vector<robotio::DepthFrame> group;
-    std::vector<robotio::Pose2D> odometry_poses;
-    for (std::size_t i : drive.scans[s]) {
-      group.push_back(drive.frames[i]);
-      odometry_poses.push_back(PoseAt(drive.dead_reckoning, drive.frames[i].stamp_ns));
-    }
-    run.steps.push_back(slam.ProcessScan(group, odometry_poses));
-    const std::int64_t stamp = group.front().stamp_ns;
-    run.estimate.push_back(robotio::ToStampedPose(stamp, run.steps.back().pose));
-    run.odometry_only.push_back(robotio::ToStampedPose(stamp, odometry_poses.front()));
+    ScanOutcome outcome = ProcessDriveScan(drive, s, &slam);
+    run.estimate.push_back(robotio::ToStampedPose(outcome.stamp_ns, outcome.step.pose));
+    run.odometry_only.push_back(robotio::ToStampedPose(outcome.stamp_ns, outcome.odometry));
+    run.steps.push_back(std::move(outcome.step));
   }
   return run;
 }
@@ -208,13 +220,7 @@ TEST(SlamLoop, KeepsTheMapTargetUntilTheRobotMovesOrItAges) {
 // Feeds the first `count` scans of the drive to `slam`.
 void FeedScans(const OfficeDrive& drive, std::size_t count, SlamLoop* slam) {
   for (std::size_t s = 0; s < count && s < drive.scans.size(); ++s) {
-    std::vector<robotio::DepthFrame> group;
-    std::vector<robotio::Pose2D> odometry_poses;
-    for (std::size_t i : drive.scans[s]) {
-      group.push_back(drive.frames[i]);
-      odometry_poses.push_back(PoseAt(drive.dead_reckoning, drive.frames[i].stamp_ns));
-    }
-    slam->ProcessScan(group, odometry_poses);
+    ProcessDriveScan(drive, s, slam);
   }
 }
 
