@@ -82,11 +82,16 @@ TrackerStep CameraTracker::Track(const std::vector<robotio::DepthFrame>& frames)
         robotio::DepthToBasePoints(frame, rig_.kinects[static_cast<std::size_t>(frame.sensor_id)]);
     points.insert(points.end(), base.begin(), base.end());
   }
-  points = VoxelGridFilter(points, config_.voxel_m);
+  // Thinned on a grid fixed in the map at the predicted pose: a grid fixed to the camera
+  // leaves a lattice of centroids that moves with it and pulls registration towards no
+  // motion (SlamLoop does the same).
+  step.predicted = Predict(step.stamp_ns);
+  points = Transformed(
+      VoxelGridFilter(Transformed(points, step.predicted), config_.voxel_m),
+      step.predicted.inverse());
   step.scan_points = points.size();
   step.preprocess_s = Since(start);
 
-  step.predicted = Predict(step.stamp_ns);
   step.pose = step.predicted;
   if (!local_map_.empty()) {
     start = Clock::now();
