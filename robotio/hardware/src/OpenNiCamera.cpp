@@ -186,6 +186,10 @@ Expected<std::unique_ptr<OpenNiCamera>> OpenNiCamera::Open(const OpenNiCameraCon
     openni::PlaybackControl* playback = streams->device.getPlaybackControl();
     if (playback == nullptr) return Error{what + ": opened, but not as a file device"};
     playback->setRepeatEnabled(false);
+    // Manual speed: a frame is played when it is read, none is skipped, and the player
+    // thread is idle when the device closes (at real-time speed Debian's libOniFile now
+    // and then crashed in that thread while closing; docs/HARDWARE.md).
+    playback->setSpeed(-1.0f);
     frame_count = playback->getNumberOfFrames(streams->depth);
   }
   if (streams->depth.start() != openni::STATUS_OK) {
