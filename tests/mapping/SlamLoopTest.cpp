@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
-#include <utility>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <octomap/octomap_utils.h>
@@ -126,7 +126,6 @@ struct SlamRun {
   robotio::Trajectory odometry_only;
 };
 
-// Runs SLAM with `config` over the drive.
 // Scan `s` of the drive through `slam`; the scan's time and its odometry pose with it.
 struct ScanOutcome {
   SlamStep step;
@@ -144,6 +143,7 @@ ScanOutcome ProcessDriveScan(const OfficeDrive& drive, std::size_t s, SlamLoop* 
           odometry_poses.front()};
 }
 
+// Runs SLAM with `config` over the drive.
 SlamRun RunSlam(const OfficeDrive& drive, const SlamConfig& config) {
   SlamRun run;
   SlamLoop slam(config, CoarseMapping(), drive.rig);
@@ -156,7 +156,6 @@ SlamRun RunSlam(const OfficeDrive& drive, const SlamConfig& config) {
   return run;
 }
 
-// SLAM with the default settings must end closer to the truth than odometry + gyro alone.
 // SLAM settings from a file (dynamap map --slam): keys over the defaults, a nested
 // registration block, and an unknown key refused naming the file and the key.
 TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
@@ -187,6 +186,7 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   EXPECT_NE(refused.error().message.find("max_correction_per_radian"), std::string::npos);
 }
 
+// SLAM with the default settings must end closer to the truth than odometry + gyro alone.
 TEST(SlamLoop, ReducedOfficeDriveBeatsOdometry) {
   const OfficeDrive drive = DriveThroughTheOffice(true);
   ASSERT_GT(drive.frames.size(), 100u);
@@ -214,10 +214,9 @@ TEST(SlamLoop, ReducedOfficeDriveBeatsOdometry) {
 }
 
 // Scan-to-scan registration on its own, every correction taken whole, over a straight 2 m:
-// the distance it finds must be the distance driven. Thinned on a grid
-// fixed to the robot, the scans' voxel centroids formed a lattice that moved with the robot
-// and pulled every registration towards no motion (the office tour lost 10 % of a room's
-// length that way).
+// the distance it finds must be the distance driven. Thinned on a grid fixed to the robot,
+// the scans' voxel centroids formed a lattice that moved with the robot and pulled every
+// registration towards no motion (the office tour lost 10 % of a room's length that way).
 TEST(SlamLoop, ScanToScanRegistrationKeepsTheDistanceDriven) {
   // Eastwards across the meeting room past its table and chairs, the east wall coming
   // into range ahead (where the office tour lost its 10 %); nobody walking.
