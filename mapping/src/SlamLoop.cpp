@@ -79,6 +79,7 @@ SlamConfig ParseSlamConfig(robotio::ConfigNode& node) {
   node.Read("max_correction_per_rad", &config.max_correction_per_rad, 0.0, 5.0);
   node.Read("map_reference_radius_m", &config.map_reference_radius_m, 0.5, 50.0);
   node.Read("map_reference_min_probability", &config.map_reference_min_probability, 0.5, 0.99);
+  node.Read("map_reference_surface_points", &config.map_reference_surface_points);
   node.Read("reference_refresh_m", &config.reference_refresh_m, 0.0, 10.0);
   node.Read("reference_max_age_s", &config.reference_max_age_s, 0.0, 60.0);
   node.Read("registration_voxel_m", &config.registration_voxel_m, 0.0, 1.0);
@@ -128,14 +129,40 @@ robotio::PointList SlamLoop::MapReference(const robotio::Pose2D& around) const {
                              100.0f);
   const float min_log_odds =
       octomap::logodds(static_cast<float>(config_.map_reference_min_probability));
+  const unsigned leaf_depth = tree.getTreeDepth();
   for (auto it = tree.begin_leafs_bbx(min, max), end = tree.end_leafs_bbx(); it != end; ++it) {
     if (!tree.IsStaticOccupied(*it) || it->StaticLogOdds() < min_log_odds) continue;
+    if (config_.map_reference_surface_points && it.getDepth() == leaf_depth) {
+      const auto sample = surface_samples_.find(it.getKey());
+      if (sample != surface_samples_.end()) {
+        points.push_back(sample->second.sum / sample->second.count);
+        continue;
+      }
+    }
     const octomap::point3d c = it.getCoordinate();
     points.emplace_back(c.x(), c.y(), c.z());
   }
   if (config_.registration_voxel_m > 0.0)
     return VoxelGridFilter(points, config_.registration_voxel_m);
   return points;
+}
+
+void SlamLoop::AddSurfaceSamples(const robotio::PointList& scan_map) {
+  // Up to this many points a voxel's mean is their plain mean; after it, each new point
+  // weighs 1/kMaxSamples, so a voxel follows what recent scans saw without forgetting fast.
+  constexpr float kMaxSamples = 20.0f;
+  const DualOcTree& tree = map_.tree();
+  for (const auto& p : scan_map) {
+    octomap::OcTreeKey key;
+    if (!tree.coordToKeyChecked(p.x(), p.y(), p.z(), key)) continue;
+    SurfaceSample& sample = surface_samples_[key];
+    if (sample.count < kMaxSamples) {
+      sample.sum += p;
+      sample.count += 1.0f;
+    } else {
+      sample.sum += p - sample.sum / sample.count;
+    }
+  }
 }
 
 bool SlamLoop::UpdateMapTarget(const robotio::Pose2D& predicted, std::int64_t stamp_ns) {
@@ -301,6 +328,10 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
     placed.push_back(pose_.Compose(frame_offsets[k]).ToIsometry());
   }
   map_.InsertDepthFrames(insert, mounts, placed);  // One scan: each voxel updated once.
+  if (config_.map_reference_surface_points) {
+    // The preprocessed scan was placed at the prediction; move it by the correction.
+    AddSurfaceSamples(Transformed(scan_map, pose_.Compose(step.predicted.Inverse())));
+  }
   previous_scan_map_ = Transformed(sparse, pose_);
   step.update_s = SecondsSince(t);
   return step;

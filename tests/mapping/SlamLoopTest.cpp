@@ -165,7 +165,7 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   std::FILE* f = std::fopen(good.c_str(), "w");
   ASSERT_NE(f, nullptr);
   std::fputs("reference: map\nmax_correction_per_rad: 0.05\ndegenerate_eigen_ratio: 0.1\n"
-             "registration: {trim_ratio: 0.8}\n", f);
+             "map_reference_surface_points: true\nregistration: {trim_ratio: 0.8}\n", f);
   std::fclose(f);
   f = std::fopen(bad.c_str(), "w");
   ASSERT_NE(f, nullptr);
@@ -177,6 +177,7 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   EXPECT_EQ(config->reference, ReferenceStrategy::kMap);
   EXPECT_DOUBLE_EQ(config->max_correction_per_rad, 0.05);
   EXPECT_DOUBLE_EQ(config->degenerate_eigen_ratio, 0.1);
+  EXPECT_TRUE(config->map_reference_surface_points);
   EXPECT_DOUBLE_EQ(config->registration.trim_ratio, 0.8);
   EXPECT_DOUBLE_EQ(config->max_correction_per_m, SlamConfig{}.max_correction_per_m);
 
@@ -330,6 +331,59 @@ TEST(SlamLoop, TheMapTargetLeavesOutVoxelsHitOnlyOnce) {
   EXPECT_EQ(CountBelow(confirmed, held, 0.8), 0u);
   EXPECT_LT(held.size(), all.size());
   EXPECT_GT(held.size(), all.size() / 2);
+}
+
+// Distances (m) of the map target's points that lie on the corridor's walls (within
+// `band_m` of a wall face, x between 0 and 1.4 m) from those faces, in the map frame.
+std::vector<double> DistancesFromTheCorridorWalls(const robotio::PointList& target, double band_m) {
+  // office.yaml: the corridor walls' faces at y = 7.06 and 8.94; the drive starts at y = 7.7.
+  constexpr double kSouthFace = 7.06 - 7.7;
+  constexpr double kNorthFace = 8.94 - 7.7;
+  std::vector<double> distances;
+  for (const auto& p : target) {
+    if (p.x() < 0.0 || p.x() > 1.4 || p.z() < 0.3 || p.z() > 1.5) continue;
+    for (double face : {kSouthFace, kNorthFace}) {
+      const double d = std::abs(p.y() - face);
+      if (d < band_m) distances.push_back(d);
+    }
+  }
+  return distances;
+}
+
+double Median(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+// The map target stands for each voxel by the mean of the scan points seen in it, which
+// lies on the surface; a voxel centre is up to half a voxel off it (the corridor's faces
+// are 1 cm from the 10 cm voxels' centres), and registering to centres biases the pose.
+TEST(SlamLoop, TheMapTargetLiesOnTheSurfacesNotOnVoxelCentres) {
+  DriveSetup setup;
+  setup.people = false;
+  setup.phases = {{0.4, 0.0, 4.0}};
+  const OfficeDrive drive = SimulateOfficeDrive(setup);
+  ASSERT_GT(drive.scans.size(), 30u);
+  SlamConfig config;
+  config.registration_voxel_m = 0.0;  // The target's points as they are.
+  config.map_reference_surface_points = true;
+  SlamLoop surface(config, CoarseMapping(), drive.rig);
+  FeedScans(drive, drive.scans.size(), &surface);
+  config.map_reference_surface_points = false;
+  SlamLoop centres(config, CoarseMapping(), drive.rig);
+  FeedScans(drive, drive.scans.size(), &centres);
+
+  const robotio::Pose2D start{};
+  const std::vector<double> on_surface =
+      DistancesFromTheCorridorWalls(surface.MapReference(start), 0.05);
+  const std::vector<double> on_centres =
+      DistancesFromTheCorridorWalls(centres.MapReference(start), 0.05);
+  ASSERT_GT(on_surface.size(), 50u);
+  ASSERT_GT(on_centres.size(), 50u);
+  std::printf("median distance from the walls: surface means %.4f m, centres %.4f m\n",
+              Median(on_surface), Median(on_centres));
+  EXPECT_LT(Median(on_surface), 0.004);
+  EXPECT_GT(Median(on_centres), 0.008);
 }
 
 }  // namespace

@@ -6,7 +6,10 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "dynamap/mapping/DualMap.hpp"
 #include "dynamap/mapping/MappingConfig.hpp"
@@ -55,6 +58,13 @@ struct SlamConfig {
   // occupied voxel) the office tour's ATE was 0.165 m and a small-office mission's 0.113 m,
   // worse than its odometry's 0.082 m; with 0.8, 0.124 and 0.058 m (docs/RESULTS.md).
   double map_reference_min_probability = 0.8;
+  // true: each leaf voxel of the map target stands for the mean of the scan points that
+  // fell in it (placed by their corrected poses) instead of its centre, which is up to half
+  // a voxel off the surface. Registering to centres biased SLAM by several centimetres even
+  // on noise-free data with ground truth for odometry; with the means the office tour was
+  // better for 150 s and then took a 0.29 m wrong correction (docs/RESULTS.md), so centres
+  // stay the default.
+  bool map_reference_surface_points = false;
   // The map target (voxels, k-d tree, normals) is kept between scans, as KISS-ICP keeps
   // its local map, and rebuilt once the robot is this far from where it was built (the
   // scan must stay inside it) or it is this old. Rebuilt every 0.1 s, it followed the
@@ -122,9 +132,10 @@ class SlamLoop {
   [[nodiscard]] const robotio::Pose2D& pose() const { return pose_; }
   [[nodiscard]] const DualMap& map() const { return map_; }
   [[nodiscard]] const SlamConfig& config() const { return config_; }
-  // Occupied static voxel centres near `around` (x/y within map_reference_radius_m, static
-  // probability at least map_reference_min_probability), thinned to the registration voxel:
-  // the map target.
+  // Occupied static voxels near `around` (x/y within map_reference_radius_m, static
+  // probability at least map_reference_min_probability), each as the mean of the scan
+  // points seen in it (map_reference_surface_points) or as its centre, thinned to the
+  // registration voxel: the map target.
   [[nodiscard]] robotio::PointList MapReference(const robotio::Pose2D& around) const;
 
  private:
@@ -157,6 +168,15 @@ class SlamLoop {
   [[nodiscard]] robotio::Pose2D Fuse(const robotio::Pose2D& predicted,
                                      const robotio::Pose2D& registered);
   robotio::PointList previous_scan_map_;           // Last scan's points in the map frame.
+  // Running mean of the scan points that fell in each leaf voxel (map frame).
+  struct SurfaceSample {
+    Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+    float count = 0.0f;
+  };
+  // Adds the scan's points (map frame, corrected) to the voxels' running means.
+  void AddSurfaceSamples(const robotio::PointList& scan_map);
+  std::unordered_map<octomap::OcTreeKey, SurfaceSample, octomap::OcTreeKey::KeyHash>
+      surface_samples_;
 };
 
 // Frames (sorted by capture stamp) grouped into scans of one instant: a group ends when a
