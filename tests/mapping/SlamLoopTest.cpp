@@ -165,7 +165,7 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   std::FILE* f = std::fopen(good.c_str(), "w");
   ASSERT_NE(f, nullptr);
   std::fputs("reference: map\nmax_correction_per_rad: 0.05\ndegenerate_eigen_ratio: 0.1\n"
-             "map_reference_surface_points: true\nregistration: {trim_ratio: 0.8}\n", f);
+             "map_reference_surface_points: false\nregistration: {trim_ratio: 0.8}\n", f);
   std::fclose(f);
   f = std::fopen(bad.c_str(), "w");
   ASSERT_NE(f, nullptr);
@@ -177,7 +177,7 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   EXPECT_EQ(config->reference, ReferenceStrategy::kMap);
   EXPECT_DOUBLE_EQ(config->max_correction_per_rad, 0.05);
   EXPECT_DOUBLE_EQ(config->degenerate_eigen_ratio, 0.1);
-  EXPECT_TRUE(config->map_reference_surface_points);
+  EXPECT_FALSE(config->map_reference_surface_points);
   EXPECT_DOUBLE_EQ(config->registration.trim_ratio, 0.8);
   EXPECT_DOUBLE_EQ(config->max_correction_per_m, SlamConfig{}.max_correction_per_m);
 

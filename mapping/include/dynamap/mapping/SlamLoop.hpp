@@ -43,7 +43,9 @@ struct SlamConfig {
   // not exceed abs + per-metre · distance driven (and likewise for heading) since the
   // last accepted map registration (map target) or the last scan (previous scan).
   double max_correction_m = 0.01;       // m.
-  double max_correction_per_m = 0.2;    // m per m driven.
+  // 0.1: with 0.2 the office tour took a 0.29 m wrong correction after 2 m of rejected
+  // map registrations (docs/RESULTS.md).
+  double max_correction_per_m = 0.1;    // m per m driven.
   double max_correction_rad = 0.005;    // rad.
   double max_correction_per_rad = 0.2;  // rad per rad turned (gyro).
   // Directions of the (x, y, yaw) correction whose information eigenvalue is below this
@@ -58,13 +60,12 @@ struct SlamConfig {
   // occupied voxel) the office tour's ATE was 0.165 m and a small-office mission's 0.113 m,
   // worse than its odometry's 0.082 m; with 0.8, 0.124 and 0.058 m (docs/RESULTS.md).
   double map_reference_min_probability = 0.8;
-  // true: each leaf voxel of the map target stands for the mean of the scan points that
-  // fell in it (placed by their corrected poses) instead of its centre, which is up to half
-  // a voxel off the surface. Registering to centres biased SLAM by several centimetres even
-  // on noise-free data with ground truth for odometry; with the means the office tour was
-  // better for 150 s and then took a 0.29 m wrong correction (docs/RESULTS.md), so centres
-  // stay the default.
-  bool map_reference_surface_points = false;
+  // Each leaf voxel of the map target stands for the mean of the scan points that fell in
+  // it (placed by their corrected poses) instead of its centre, which is up to half a voxel
+  // off the surface. Registering to centres biased SLAM by several centimetres even on
+  // noise-free data with ground truth for odometry; with the means (and the 0.1 m/m gate
+  // above) the office tour's ATE went from 0.085 to 0.068 m (docs/RESULTS.md). false: centres.
+  bool map_reference_surface_points = true;
   // The map target (voxels, k-d tree, normals) is kept between scans, as KISS-ICP keeps
   // its local map, and rebuilt once the robot is this far from where it was built (the
   // scan must stay inside it) or it is this old. Rebuilt every 0.1 s, it followed the
