@@ -43,8 +43,8 @@ struct SlamConfig {
   // not exceed abs + per-metre · distance driven (and likewise for heading) since the
   // last accepted map registration (map target) or the last scan (previous scan).
   double max_correction_m = 0.01;       // m.
-  // 0.1: with 0.2 the office tour took a 0.29 m wrong correction after 2 m of rejected
-  // map registrations (docs/RESULTS.md).
+  // 0.1: with 0.2 the office tour took a 0.29 m wrong correction after 2.3 m without an
+  // accepted map registration (docs/RESULTS.md).
   double max_correction_per_m = 0.1;    // m per m driven.
   double max_correction_rad = 0.005;    // rad.
   double max_correction_per_rad = 0.2;  // rad per rad turned (gyro).
