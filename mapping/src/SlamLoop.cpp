@@ -83,6 +83,7 @@ SlamConfig ParseSlamConfig(robotio::ConfigNode& node) {
   node.Read("reference_refresh_m", &config.reference_refresh_m, 0.0, 10.0);
   node.Read("reference_max_age_s", &config.reference_max_age_s, 0.0, 60.0);
   node.Read("registration_voxel_m", &config.registration_voxel_m, 0.0, 1.0);
+  node.Read("registration_max_depth_m", &config.registration_max_depth_m, 0.0, 100.0);
   node.Read("degenerate_eigen_ratio", &config.degenerate_eigen_ratio, 0.0, 1.0);
   node.Read("fuse_with_odometry", &config.fuse_with_odometry);
   node.Read("odometry_sigma_per_sqrt_m", &config.odometry_sigma_per_sqrt_m, 0.0, 1.0);
@@ -115,6 +116,12 @@ SlamLoop::SlamLoop(SlamConfig config, const MappingConfig& mapping, robotio::Rig
       previous_registration_(config_.registration) {
   for (auto& mount : rig_.kinects) {
     mount.max_range_m = std::min(mount.max_range_m, mapping.max_range_m);
+  }
+  scan_rig_ = rig_;
+  if (config_.registration_max_depth_m > 0.0) {
+    for (auto& mount : scan_rig_.kinects) {
+      mount.max_range_m = std::min(mount.max_range_m, config_.registration_max_depth_m);
+    }
   }
 }
 
@@ -245,7 +252,8 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
     const auto sensor = static_cast<std::size_t>(frames[k].sensor_id);
     if (sensor >= rig_.kinects.size()) continue;
     const robotio::PointList points =
-        Transformed(robotio::DepthToBasePoints(frames[k], rig_.kinects[sensor]), frame_offsets[k]);
+        Transformed(robotio::DepthToBasePoints(frames[k], scan_rig_.kinects[sensor]),
+                    frame_offsets[k]);
     merged.insert(merged.end(), points.begin(), points.end());
   }
   // Thinned on a grid fixed in the map (at the predicted pose), not on one fixed to the

@@ -165,7 +165,8 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   std::FILE* f = std::fopen(good.c_str(), "w");
   ASSERT_NE(f, nullptr);
   std::fputs("reference: map\nmax_correction_per_rad: 0.05\ndegenerate_eigen_ratio: 0.1\n"
-             "map_reference_surface_points: false\nregistration: {trim_ratio: 0.8}\n", f);
+             "map_reference_surface_points: false\nregistration_max_depth_m: 3.5\n"
+             "registration: {trim_ratio: 0.8}\n", f);
   std::fclose(f);
   f = std::fopen(bad.c_str(), "w");
   ASSERT_NE(f, nullptr);
@@ -178,6 +179,7 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   EXPECT_DOUBLE_EQ(config->max_correction_per_rad, 0.05);
   EXPECT_DOUBLE_EQ(config->degenerate_eigen_ratio, 0.1);
   EXPECT_FALSE(config->map_reference_surface_points);
+  EXPECT_DOUBLE_EQ(config->registration_max_depth_m, 3.5);
   EXPECT_DOUBLE_EQ(config->registration.trim_ratio, 0.8);
   EXPECT_DOUBLE_EQ(config->max_correction_per_m, SlamConfig{}.max_correction_per_m);
 
@@ -384,6 +386,74 @@ TEST(SlamLoop, TheMapTargetLiesOnTheSurfacesNotOnVoxelCentres) {
               Median(on_surface), Median(on_centres));
   EXPECT_LT(Median(on_surface), 0.004);
   EXPECT_GT(Median(on_centres), 0.008);
+}
+
+// Whether `p` is the centre of its voxel of edge `resolution_m` (OctoMap's grid).
+bool IsVoxelCentre(const Eigen::Vector3f& p, double resolution_m) {
+  for (int i = 0; i < 3; ++i) {
+    const double centre = (std::floor(p[i] / resolution_m) + 0.5) * resolution_m;
+    if (std::abs(p[i] - centre) > 1e-4) return false;
+  }
+  return true;
+}
+
+// Target points further than `distance_m` (x/y) from `robot`, and how many are voxel centres.
+std::pair<std::size_t, std::size_t> FarPointsAndCentres(const robotio::PointList& target,
+                                                        const robotio::Pose2D& robot,
+                                                        double distance_m) {
+  std::size_t far = 0;
+  std::size_t centres = 0;
+  for (const auto& p : target) {
+    if (std::hypot(p.x() - robot.x, p.y() - robot.y) <= distance_m) continue;
+    ++far;
+    if (IsVoxelCentre(p, CoarseMapping().resolution_m)) ++centres;
+  }
+  return {far, centres};
+}
+
+// Depth noise grows with the square of depth, and a return is dropped when its measured
+// depth passes the range limit: a surface just inside the limit keeps only its nearer
+// returns and looks nearer than it is. With registration_max_depth_m the registered scan
+// and the target's surface means take only returns up to that depth; the map keeps the
+// full range (its far voxels stand in the target by their centres).
+TEST(SlamLoop, TheRegisteredScanAndSurfaceMeansStopAtTheRegistrationDepth) {
+  DriveSetup setup;
+  setup.people = false;
+  setup.phases = {{0.0, 0.0, 1.5}};  // Standing at the corridor's west end, facing east.
+  const OfficeDrive drive = SimulateOfficeDrive(setup);
+  ASSERT_GT(drive.scans.size(), 10u);
+  SlamConfig config;
+  config.registration_voxel_m = 0.0;  // The target's points as they are.
+  SlamLoop full(config, CoarseMapping(), drive.rig);
+  FeedScans(drive, drive.scans.size(), &full);
+  config.registration_max_depth_m = 2.0;
+  SlamLoop near(config, CoarseMapping(), drive.rig);
+  std::size_t full_points = 0;
+  std::size_t near_points = 0;
+  for (std::size_t s = 0; s < drive.scans.size(); ++s) {
+    near_points += ProcessDriveScan(drive, s, &near).step.scan_points;
+  }
+  {
+    SlamLoop counted(SlamConfig{}, CoarseMapping(), drive.rig);
+    for (std::size_t s = 0; s < drive.scans.size(); ++s) {
+      full_points += ProcessDriveScan(drive, s, &counted).step.scan_points;
+    }
+  }
+  EXPECT_LT(near_points, full_points);
+
+  // Beyond 3 m (2 m of depth is at most 2.5 m from the Kinects, which sit 0.12 m ahead of
+  // the base) no return was taken into a mean: every far target point is a voxel centre.
+  const auto [far_full, centres_full] = FarPointsAndCentres(full.MapReference(full.pose()),
+                                                            full.pose(), 3.0);
+  const auto [far_near, centres_near] = FarPointsAndCentres(near.MapReference(near.pose()),
+                                                            near.pose(), 3.0);
+  std::printf("scan points %zu (2 m) / %zu (full); target points beyond 3 m: %zu of %zu "
+              "centres (2 m), %zu of %zu (full)\n",
+              near_points, full_points, centres_near, far_near, centres_full, far_full);
+  ASSERT_GT(far_full, 100u);
+  EXPECT_LT(centres_full, far_full / 10);  // Means where the full range was taken.
+  EXPECT_GT(far_near, far_full / 2);       // The map itself still reaches as far.
+  EXPECT_EQ(centres_near, far_near);
 }
 
 }  // namespace
