@@ -1,9 +1,10 @@
 // Scans per second of stock octomap::OcTree::insertPointCloud (discretize on) and of the
 // dual map's batched update on the same recorded frames (both Kinects, ground-truth poses),
 // in one run, and the time to turn a depth frame into rays.
-// Usage: bench_dual_map --log DIR [--frames N] [--resolution M] [--max-range M]
+// Usage: bench_dual_map --log DIR [--frames N] [--resolution M] [--max-range M] [--rounds N]
 #include <octomap/OcTree.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -32,6 +33,11 @@ Eigen::Isometry3d PoseAt(const dynamap::robotio::Trajectory& trajectory, std::in
   return trajectory[i].pose;
 }
 
+double Median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -42,16 +48,18 @@ int main(int argc, char** argv) {
   std::string log;
   std::size_t max_frames = 200;
   double resolution = 0.05, max_range = 4.0;
+  int rounds = 3;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
     if (key == "--log") log = argv[i + 1];
     if (key == "--frames") max_frames = std::strtoul(argv[i + 1], nullptr, 10);
     if (key == "--resolution") resolution = std::strtod(argv[i + 1], nullptr);
     if (key == "--max-range") max_range = std::strtod(argv[i + 1], nullptr);
+    if (key == "--rounds") rounds = std::max(1, std::atoi(argv[i + 1]));
   }
   if (log.empty()) {
     std::fprintf(stderr, "usage: bench_dual_map --log RECORDING [--frames N] [--resolution M] "
-                         "[--max-range M]\n");
+                         "[--max-range M] [--rounds N]\n");
     return 2;
   }
   auto reader = dynamap::robotio::RecordingReader::Open(log);
@@ -93,22 +101,37 @@ int main(int argc, char** argv) {
     clouds[i].reserve(frames[i].points_map.size());
     for (const auto& p : frames[i].points_map) clouds[i].push_back(p.x(), p.y(), p.z());
   }
-  octomap::OcTree stock(resolution);
-  auto start = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < frames.size(); ++i) {
-    const auto& o = frames[i].origin_map;
-    stock.insertPointCloud(clouds[i], octomap::point3d(o.x(), o.y(), o.z()), max_range,
-                           /*lazy_eval=*/false, /*discretize=*/true);
-  }
-  const double stock_s = SecondsSince(start);
-
+  // Stock OctoMap, the dual map on one thread (as stock OctoMap runs) and with its default
+  // threads (MappingConfig::insert_threads), in turn for `rounds` rounds: this machine's
+  // speed wanders by a quarter from minute to minute, so each figure is the median round.
+  // The two dual maps must be the same.
   dynamap::mapping::MappingConfig config;
   config.resolution_m = resolution;
   config.max_range_m = max_range;
-  dynamap::mapping::DualMap dual(config);
-  start = std::chrono::steady_clock::now();
-  for (const Frame& frame : frames) dual.InsertPointCloud(frame.points_map, frame.origin_map);
-  const double dual_s = SecondsSince(start);
+  const int default_threads = config.insert_threads;
+  std::vector<double> stock_runs, dual_runs[2];  // Dual: one thread, default threads.
+  std::size_t stock_nodes = 0, dual_nodes[2] = {0, 0};
+  for (int round = 0; round < rounds; ++round) {
+    octomap::OcTree stock(resolution);
+    auto start = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      const auto& o = frames[i].origin_map;
+      stock.insertPointCloud(clouds[i], octomap::point3d(o.x(), o.y(), o.z()), max_range,
+                             /*lazy_eval=*/false, /*discretize=*/true);
+    }
+    stock_runs.push_back(SecondsSince(start));
+    stock_nodes = stock.size();
+    for (int run = 0; run < 2; ++run) {
+      config.insert_threads = run == 0 ? 1 : default_threads;
+      dynamap::mapping::DualMap dual(config);
+      start = std::chrono::steady_clock::now();
+      for (const Frame& frame : frames) dual.InsertPointCloud(frame.points_map, frame.origin_map);
+      dual_runs[run].push_back(SecondsSince(start));
+      dual_nodes[run] = dual.tree().size();
+    }
+  }
+  const double stock_s = Median(stock_runs);
+  const double dual_s[2] = {Median(dual_runs[0]), Median(dual_runs[1])};
 
   // Depth frames to rays as the map inserts them, without and with the edge clearance
   // (MappingConfig::edge_clearance_voxels, its default).
@@ -117,7 +140,7 @@ int main(int argc, char** argv) {
   double rays_s[2] = {0.0, 0.0};
   std::size_t checksum = 0;
   for (int with_edges = 0; with_edges < 2; ++with_edges) {
-    start = std::chrono::steady_clock::now();
+    const auto start = std::chrono::steady_clock::now();
     for (const Frame& frame : frames) {
       const auto& mount = reader->rig().kinects[static_cast<std::size_t>(frame.depth.sensor_id)];
       checksum += dynamap::robotio::DepthToRays(frame.depth, mount, frame.T_map_base, 1,
@@ -128,15 +151,20 @@ int main(int argc, char** argv) {
   }
 
   const double n = static_cast<double>(frames.size());
-  std::printf("frames (scans)        %zu (avg %.0f points)\n", frames.size(),
+  std::printf("frames (scans)         %zu (avg %.0f points)\n", frames.size(),
               static_cast<double>(points) / n);
-  std::printf("resolution / range    %.3f m / %.1f m\n", resolution, max_range);
-  std::printf("stock OcTree          %.1f scans/s (%.2f ms/scan, %zu nodes)\n", n / stock_s,
-              1e3 * stock_s / n, stock.size());
-  std::printf("dual map              %.1f scans/s (%.2f ms/scan, %zu nodes)\n", n / dual_s,
-              1e3 * dual_s / n, dual.tree().size());
-  std::printf("ratio dual / stock    %.2fx\n", stock_s / dual_s);
-  std::printf("depth to rays         %.2f ms/frame, with edge clearance %.2f ms/frame (%zu rays)\n",
+  std::printf("resolution / range     %.3f m / %.1f m\n", resolution, max_range);
+  std::printf("rounds                 %d (median shown)\n", rounds);
+  std::printf("stock OcTree           %.1f scans/s (%.2f ms/scan, %zu nodes)\n", n / stock_s,
+              1e3 * stock_s / n, stock_nodes);
+  std::printf("dual map, 1 thread     %.1f scans/s (%.2f ms/scan, %zu nodes)\n", n / dual_s[0],
+              1e3 * dual_s[0] / n, dual_nodes[0]);
+  std::printf("dual map, %d threads    %.1f scans/s (%.2f ms/scan, %zu nodes%s)\n", default_threads,
+              n / dual_s[1], 1e3 * dual_s[1] / n, dual_nodes[1],
+              dual_nodes[1] == dual_nodes[0] ? "" : ", NOT the one-thread map");
+  std::printf("ratio dual / stock     %.2fx (1 thread %.2fx)\n", stock_s / dual_s[1],
+              stock_s / dual_s[0]);
+  std::printf("depth to rays          %.2f ms/frame, with edge clearance %.2f ms/frame (%zu rays)\n",
               1e3 * rays_s[0] / n, 1e3 * rays_s[1] / n, checksum / 2);
   return 0;
 }

@@ -9,12 +9,16 @@ namespace dynamap::mapping {
 DualMap::DualMap(const MappingConfig& config)
     : config_(config),
       rules_(UpdateRules::FromConfig(config)),
-      tree_(std::make_unique<DualOcTree>(config.resolution_m)) {
+      tree_(std::make_unique<DualOcTree>(config.resolution_m)),
+      integrator_(static_cast<unsigned>(config.insert_threads)) {
   ApplyConfigToTree();
 }
 
 DualMap::DualMap(std::unique_ptr<DualOcTree> tree, const MappingConfig& config)
-    : config_(config), rules_(UpdateRules::FromConfig(config)), tree_(std::move(tree)) {
+    : config_(config),
+      rules_(UpdateRules::FromConfig(config)),
+      tree_(std::move(tree)),
+      integrator_(static_cast<unsigned>(config.insert_threads)) {
   config_.resolution_m = tree_->getResolution();
   rules_ = UpdateRules::FromConfig(config_);  // The surface margin is in voxels of this tree.
   ApplyConfigToTree();

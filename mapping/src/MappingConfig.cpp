@@ -29,6 +29,7 @@ MappingConfig ParseMappingConfig(robotio::ConfigNode& node) {
   node.Read("edge_clearance_voxels", &config.edge_clearance_voxels, 0.0, 20.0);
   node.Read("persistence_observations", &config.persistence_observations, 0, 1000000);
   node.Read("voxel_filter_m", &config.voxel_filter_m, 0.005, 2.0);
+  node.Read("insert_threads", &config.insert_threads, 1, 64);
   auto status = ValidateMappingConfig(config, node.file());
   if (!status) node.Fail("occupancy_threshold", status.error().message);
   return config;

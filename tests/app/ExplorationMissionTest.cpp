@@ -124,10 +124,13 @@ TEST(ExplorationMission, ExploresTheSmallOffice) {
   config.max_time_s = 200.0;
   const auto report = RunToTheEnd(config);
   ASSERT_TRUE(report) << report.error().message;
-  std::printf("completed %d in %.0f s, collisions %lld, explored %.3f, surfaces %.3f\n",
-              report->completed ? 1 : 0, report->mission_time_s,
-              static_cast<long long>(report->collisions), report->explored_free_fraction,
-              report->surface_coverage);
+  std::printf(
+      "completed %d in %.0f s, collisions %lld, explored %.3f, surfaces %.3f, SA %.3f, DA %.3f "
+      "(above the floor layer %.3f)\n",
+      report->completed ? 1 : 0, report->mission_time_s,
+      static_cast<long long>(report->collisions), report->explored_free_fraction,
+      report->surface_coverage, report->static_accuracy, report->dynamic_accuracy,
+      report->dynamic_accuracy_above_floor);
   EXPECT_LE(report->mission_time_s, config.max_time_s + 1.0);
   EXPECT_EQ(report->frames_dropped, 0);
   EXPECT_GT(report->path_length_m, 10.0);  // It leaves the start and visits the rooms.

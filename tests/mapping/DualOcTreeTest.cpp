@@ -439,5 +439,43 @@ TEST(DualOcTreeTest, BatchedUpdateEqualsTheReferenceImplementation) {
   }
 }
 
+// Threads share a scan's rays (MappingConfig::insert_threads) and merge what they observed:
+// the map is byte for byte the one-thread map, scan after scan, with scans large enough
+// (about 68,000 rays per origin) to be split.
+TEST(DualOcTreeTest, TheMapDoesNotDependOnTheNumberOfInsertThreads) {
+  std::vector<std::vector<robotio::DepthRays>> scans;
+  testing::SyntheticScene scene;
+  for (int scan = 0; scan < 6; ++scan) {
+    scene.boxes = {{{1.5f, -1.0f + 0.15f * scan, -0.5f}, {1.8f, -0.6f + 0.15f * scan, 1.2f}}};
+    const Eigen::Vector3f origin(0.05f * scan, 0.01f * scan, 0.3f);
+    scans.push_back({testing::CastScan(scene, origin, 4.0f, 0.2f),
+                     testing::CastScan(scene, origin + Eigen::Vector3f(0.1f, 0.05f, 0.5f), 4.0f,
+                                       0.2f)});
+  }
+  ASSERT_GT(scans.front().front().ends.size(), 60000u);
+  MappingConfig config;
+  config.resolution_m = 0.05;
+  config.insert_threads = 1;
+  DualMap one_thread{config};
+  for (const int threads : {2, 3}) {
+    config.insert_threads = threads;
+    DualMap several{config};
+    for (std::size_t scan = 0; scan < scans.size(); ++scan) {
+      const ScanStatistics expected = threads == 2 ? one_thread.InsertScan(scans[scan])
+                                                   : ScanStatistics{};
+      const ScanStatistics got = several.InsertScan(scans[scan]);
+      if (threads == 2) {
+        EXPECT_EQ(got.hit_voxels, expected.hit_voxels);
+        EXPECT_EQ(got.free_voxels, expected.free_voxels);
+        // Each thread traces its own distinct ends: a few are traced by both.
+        EXPECT_GE(got.traced_rays, expected.traced_rays);
+        ASSERT_EQ(Serialise(several.tree()), Serialise(one_thread.tree()))
+            << threads << " threads, scan " << scan;
+      }
+    }
+    EXPECT_EQ(Serialise(several.tree()), Serialise(one_thread.tree())) << threads << " threads";
+  }
+}
+
 }  // namespace
 }  // namespace dynamap::mapping

@@ -162,6 +162,10 @@ TEST(MappingConfigTest, ParsesYamlAndRejectsBadValuesNamingTheKey) {
   ASSERT_TRUE(persistence) << persistence.error().message;
   EXPECT_EQ(persistence->persistence_observations, 450);
   EXPECT_FALSE(parse("mapping:\n  persistence_observations: -1\n"));
+  auto threads = parse("mapping:\n  insert_threads: 1\n");
+  ASSERT_TRUE(threads) << threads.error().message;
+  EXPECT_EQ(threads->insert_threads, 1);
+  EXPECT_FALSE(parse("mapping:\n  insert_threads: 0\n"));
 
   auto bad_range = parse("mapping:\n  prob_high: 0.4\n");
   ASSERT_FALSE(bad_range);

@@ -88,6 +88,9 @@ struct MappingConfig {
   // rule.
   int persistence_observations = 300;
   double voxel_filter_m = 0.05;  // m, leaf of the preprocessing voxel grid (base frame).
+  // Threads that share a scan's per-ray work (ScanIntegrator); the map is the same for any
+  // number. Two: the machine the thesis's rate is asked of has two cores.
+  int insert_threads = 2;
 };
 
 [[nodiscard]] const char* UpdateModeName(UpdateMode mode);

@@ -4,8 +4,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
 #include <octomap/OcTreeKey.h>
@@ -18,7 +18,8 @@ namespace dynamap::mapping {
 
 struct ScanStatistics {
   std::size_t rays = 0;          // Rays given.
-  std::size_t traced_rays = 0;   // Distinct end voxels traced (endpoints are discretised).
+  // End voxels traced (endpoints are discretised): the distinct ones of each thread.
+  std::size_t traced_rays = 0;
   std::size_t hit_voxels = 0;    // Voxels observed occupied.
   std::size_t free_voxels = 0;   // Voxels observed free (and not hit).
 };
@@ -31,7 +32,9 @@ struct ScanStatistics {
 //
 // Why it is fast: per-scan deduplication in 8x8x8-voxel bit blocks (no hashing per ray
 // step), blocks visited in Morton order so each tree path is walked once, and inner nodes
-// aggregated and pruned once, on the way back up, instead of after every voxel.
+// aggregated and pruned once, on the way back up, instead of after every voxel; the
+// per-ray work shared by threads.
+
 // Where ray `i` stops observing free space: its end point, or with a known incidence, the
 // point surface_margin_m / max(incidence_cos, min_incidence_cos) before the surface it
 // measured (where the ray comes within surface_margin_m of the surface plane); for a ray
@@ -47,6 +50,14 @@ struct ScanStatistics {
 
 class ScanIntegrator {
  public:
+  // `threads` (at least 1) share the per-ray work of a scan: end voxels, free-space ends,
+  // hits and traces, each thread in its own voxel blocks, merged with OR. The tree update
+  // stays on the calling thread; the map does not depend on the number of threads.
+  explicit ScanIntegrator(unsigned threads = 1);
+  ~ScanIntegrator();
+  ScanIntegrator(ScanIntegrator&&) noexcept;
+  ScanIntegrator& operator=(ScanIntegrator&&) noexcept;
+
   // `rays` are in the map frame (robotio::DepthToRays with T_map_base).
   ScanStatistics Insert(DualOcTree& tree, const robotio::DepthRays& rays,
                         const UpdateRules& rules);
@@ -56,35 +67,16 @@ class ScanIntegrator {
                         const UpdateRules& rules);
 
  private:
-  struct Block {
-    std::uint64_t morton = 0;     // Block coordinates interleaved: depth-first tree order.
-    std::uint16_t coords[3] = {0, 0, 0};  // key >> 3 per axis.
-    std::uint64_t free[8] = {};   // Bit (Morton index within block) per voxel.
-    std::uint64_t hit[8] = {};
-    std::uint64_t end[8] = {};    // End voxel already queued for tracing.
-  };
+  struct Worker;  // One thread's voxel blocks and trace buffers (ScanIntegrator.cpp).
 
-  Block& BlockFor(const octomap::OcTreeKey& key);
-  Block* FindBlock(const octomap::OcTreeKey& key);  // nullptr when the scan has no such block.
-  // Every hit's 26 neighbours, but above a hit in `floor_layer` (floor_plane) none.
-  void ClearSurfaceBand(std::optional<octomap::key_type> floor_layer);
-  void PrepareIndex(const octomap::OcTreeKey& min_key, const octomap::OcTreeKey& max_key);
-  void UpdateTree(DualOcTree& tree, const UpdateRules& rules, ScanStatistics* stats);
-
-  std::vector<Block> blocks_;
-  std::vector<std::int32_t> dense_index_;  // Block slot per block cell of the scan's box.
-  std::unordered_map<std::uint64_t, std::int32_t> sparse_index_;  // When the box is huge.
-  bool use_dense_ = true;
-  std::uint16_t box_min_[3] = {0, 0, 0};
-  std::uint32_t box_dims_[3] = {0, 0, 0};
-  std::int32_t last_slot_ = -1;
-  std::uint64_t last_block_id_ = ~0ull;
-  std::vector<octomap::OcTreeKey> end_keys_;  // Of all sets, one after the other.
-  std::vector<bool> end_valid_;
-  std::vector<octomap::OcTreeKey> unique_ends_;
+  unsigned threads_ = 1;
+  std::vector<std::unique_ptr<Worker>> workers_;
+  std::vector<octomap::OcTreeKey> end_keys_;   // Of all sets, one after the other.
+  std::vector<octomap::OcTreeKey> free_keys_;  // Where each ray's free space ends.
+  std::vector<std::uint8_t> end_valid_;        // Bytes: written from several threads.
+  std::vector<std::uint8_t> free_valid_;
   std::vector<octomap::OcTreeKey> hit_keys_;  // Distinct hit voxels of the scan.
   std::vector<std::int32_t> order_;
-  octomap::KeyRay key_ray_;
 };
 
 }  // namespace dynamap::mapping
