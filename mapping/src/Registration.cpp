@@ -7,7 +7,6 @@
 #include <pcl/registration/correspondence_rejection_trimmed.h>
 #include <pcl/registration/icp.h>
 #include <pcl/registration/transformation_estimation_point_to_plane_lls.h>
-#include <pcl/search/kdtree.h>
 
 #include <cmath>
 #include <limits>
@@ -16,13 +15,14 @@
 #include <vector>
 
 #include "PlanarTransformationEstimation.hpp"
+#include "PointNormalSearch.hpp"
 
 namespace dynamap::mapping {
 namespace {
 
 using Point = pcl::PointNormal;
 using Cloud = pcl::PointCloud<Point>;
-using Tree = pcl::search::KdTree<Point>;
+using Tree = internal::PointNormalSearch;  // Not KdTreeFLANN: PointNormalSearch.hpp says why.
 
 // Below this many points a cloud says too little to register against.
 constexpr std::size_t kMinPoints = 10;

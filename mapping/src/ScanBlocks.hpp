@@ -3,12 +3,12 @@
 // a set of its own; the sets merge with OR.
 #pragma once
 
+#include <octomap/OcTreeKey.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
-
-#include <octomap/OcTreeKey.h>
 
 namespace dynamap::mapping {
 
@@ -17,7 +17,7 @@ struct ScanBlock {
   std::uint16_t coords[3] = {0, 0, 0};  // key >> 3 per axis.
   std::uint64_t free[8] = {};           // Bit (Morton index within block) per voxel.
   std::uint64_t hit[8] = {};
-  std::uint64_t end[8] = {};            // End voxel already queued for tracing.
+  std::uint64_t end[8] = {};  // End voxel already queued for tracing.
 };
 
 // Spreads the 3 low bits of v to bits 0, 3, 6.

@@ -117,6 +117,8 @@ TEST(ExplorationMission, SlamRegistersBothKinectsOfAnInstantAsOneScan) {
 // the planner waited for people in its way, runs now and then explored only 0.64-0.68: a
 // person pacing in front of room A's door had every target beyond it blacklisted in turn.
 // Completion is reported, not asserted: the planner is often still inspecting at 200 s.
+// DA came out 0.973-0.983 in seven runs of this mission (three and four at a time) and
+// once 0.801 in a full ctest run, for a reason not found; hence the print of SA and DA.
 TEST(ExplorationMission, ExploresTheSmallOffice) {
   const std::string out = test::ScratchDir();
   MissionConfig config = SmallOfficeMission(out);
