@@ -3,12 +3,15 @@
 // a set of its own; the sets merge with OR.
 #pragma once
 
-#include <octomap/OcTreeKey.h>
-
+// OctoMap's OcTreeKey.h uses uint16_t without including <cstdint>: keep this order.
+// clang-format off
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
+
+#include <octomap/OcTreeKey.h>
+// clang-format on
 
 namespace dynamap::mapping {
 
