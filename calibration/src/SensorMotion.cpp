@@ -3,13 +3,15 @@
 #include <pcl/console/print.h>
 #include <pcl/features/normal_3d.h>
 #include <pcl/filters/voxel_grid.h>
-#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 #include <pcl/registration/icp.h>
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <memory>
+
+#include "dynamap/mapping/FlannPointSearch.hpp"
 
 namespace dynamap::calibration {
 namespace {
@@ -44,8 +46,8 @@ PreparedCloud PrepareCloud(const robotio::PointList& points, const IcpConfig& co
   pcl::PointCloud<pcl::Normal> normals;
   pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
   estimation.setInputCloud(down);
-  estimation.setSearchMethod(pcl::search::KdTree<pcl::PointXYZ>::Ptr(
-      new pcl::search::KdTree<pcl::PointXYZ>));
+  // Not PCL's own tree: a system call per query with Debian's FLANN (FlannPointSearch.hpp).
+  estimation.setSearchMethod(std::make_shared<mapping::FlannPointSearch<pcl::PointXYZ>>());
   estimation.setRadiusSearch(config.normal_radius_m);
   // Normals face the sensor at the origin, so both frames of a pair agree on their sign.
   estimation.setViewPoint(0.0f, 0.0f, 0.0f);
@@ -76,6 +78,7 @@ SensorMotionResult EstimateSensorMotion(const PreparedCloud& from, const Prepare
   pcl::IterativeClosestPointWithNormals<pcl::PointNormal, pcl::PointNormal> icp;
   icp.setInputSource(source);
   icp.setInputTarget(target);
+  icp.setSearchMethodTarget(std::make_shared<mapping::FlannPointSearch<pcl::PointNormal>>());
   icp.setMaxCorrespondenceDistance(config.max_correspondence_m);
   icp.setMaximumIterations(config.max_iterations);
   icp.setTransformationEpsilon(1e-10);
@@ -96,7 +99,7 @@ SensorMotionResult EstimateSensorMotion(const PreparedCloud& from, const Prepare
 
   // Point-to-plane information of the final pairing: its weakest direction is the motion
   // the scene cannot pin down.
-  pcl::KdTreeFLANN<pcl::PointNormal> tree;
+  mapping::FlannPointSearch<pcl::PointNormal> tree;
   tree.setInputCloud(target);
   Eigen::Matrix<double, 6, 6> H = Eigen::Matrix<double, 6, 6>::Zero();
   double sum_sq = 0.0;

@@ -15,14 +15,14 @@
 #include <vector>
 
 #include "PlanarTransformationEstimation.hpp"
-#include "PointNormalSearch.hpp"
+#include "dynamap/mapping/FlannPointSearch.hpp"
 
 namespace dynamap::mapping {
 namespace {
 
 using Point = pcl::PointNormal;
 using Cloud = pcl::PointCloud<Point>;
-using Tree = internal::PointNormalSearch;  // Not KdTreeFLANN: PointNormalSearch.hpp says why.
+using Tree = FlannPointSearch<Point>;  // Not KdTreeFLANN: FlannPointSearch.hpp says why.
 
 // Below this many points a cloud says too little to register against.
 constexpr std::size_t kMinPoints = 10;

@@ -1,5 +1,5 @@
-// The registration's k-d tree answers as PCL's own does (same neighbours, same distances),
-// with the cloud's indices, subsets and invalid points handled alike.
+// The k-d tree of registration and calibration answers as PCL's own does (same neighbours, same
+// distances), with the cloud's indices, subsets and invalid points handled alike.
 #include <gtest/gtest.h>
 #include <pcl/search/kdtree.h>
 
@@ -7,9 +7,9 @@
 #include <limits>
 #include <random>
 
-#include "../../mapping/src/PointNormalSearch.hpp"
+#include "dynamap/mapping/FlannPointSearch.hpp"
 
-namespace dynamap::mapping::internal {
+namespace dynamap::mapping {
 namespace {
 
 using Cloud = pcl::PointCloud<pcl::PointNormal>;
@@ -27,12 +27,12 @@ Cloud::Ptr RandomCloud(std::size_t n, unsigned seed) {
   return cloud;
 }
 
-TEST(PointNormalSearch, FindsTheNeighboursPclsKdTreeFinds) {
+TEST(FlannPointSearch, FindsTheNeighboursPclsKdTreeFinds) {
   const Cloud::Ptr cloud = RandomCloud(5000, 1);
   (*cloud)[17].x = std::numeric_limits<float>::quiet_NaN();  // Never returned.
   pcl::search::KdTree<pcl::PointNormal> pcl_tree;
   pcl_tree.setInputCloud(cloud);
-  PointNormalSearch search;
+  FlannPointSearch<pcl::PointNormal> search;
   search.setInputCloud(cloud);
   const Cloud::Ptr queries = RandomCloud(300, 2);
   for (const pcl::PointNormal& q : *queries) {
@@ -57,11 +57,29 @@ TEST(PointNormalSearch, FindsTheNeighboursPclsKdTreeFinds) {
   }
 }
 
-TEST(PointNormalSearch, SearchesOnlyTheGivenIndicesAndAnswersWithCloudIndices) {
+// Calibration estimates normals of x/y/z clouds with radius searches.
+TEST(FlannPointSearch, RadiusSearchOnPlainPointsMatchesPcl) {
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const pcl::PointNormal& p : *RandomCloud(3000, 4)) cloud->emplace_back(p.x, p.y, p.z);
+  pcl::search::KdTree<pcl::PointXYZ> pcl_tree;
+  pcl_tree.setInputCloud(cloud);
+  FlannPointSearch<pcl::PointXYZ> search;
+  search.setInputCloud(cloud);
+  for (std::size_t i = 0; i < cloud->size(); i += 97) {
+    pcl::Indices expected, got;
+    std::vector<float> expected_sq, got_sq;
+    ASSERT_EQ(search.radiusSearch((*cloud)[i], 0.25, got, got_sq),
+              pcl_tree.radiusSearch((*cloud)[i], 0.25, expected, expected_sq));
+    EXPECT_EQ(got, expected);
+    EXPECT_EQ(got_sq, expected_sq);
+  }
+}
+
+TEST(FlannPointSearch, SearchesOnlyTheGivenIndicesAndAnswersWithCloudIndices) {
   const Cloud::Ptr cloud = RandomCloud(1000, 3);
   auto odd = std::make_shared<pcl::Indices>();
   for (pcl::index_t i = 1; i < 1000; i += 2) odd->push_back(i);
-  PointNormalSearch search;
+  FlannPointSearch<pcl::PointNormal> search;
   search.setInputCloud(cloud, odd);
   pcl::Indices found;
   std::vector<float> sq;
@@ -76,11 +94,11 @@ TEST(PointNormalSearch, SearchesOnlyTheGivenIndicesAndAnswersWithCloudIndices) {
   pcl::PointNormal nan;
   nan.x = std::numeric_limits<float>::quiet_NaN();
   EXPECT_EQ(search.nearestKSearch(nan, 1, found, sq), 0);
-  PointNormalSearch empty;
+  FlannPointSearch<pcl::PointNormal> empty;
   empty.setInputCloud(std::make_shared<Cloud>());
   EXPECT_EQ(empty.nearestKSearch((*cloud)[0], 1, found, sq), 0);
   EXPECT_TRUE(found.empty());
 }
 
 }  // namespace
-}  // namespace dynamap::mapping::internal
+}  // namespace dynamap::mapping
