@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -101,6 +102,13 @@ SlamRunResult RunSlamPass(const robotio::RecordingReader& reader, const MapOptio
   auto result = RunSlam(reader, options, [&](double f) { progress.Update(f, "scans"); });
   if (!result) FailCommand(kCommand, result.error().message);
   progress.Finish(std::to_string(result->frames_processed) + " frames");
+  if (result->loop_closure) {
+    const mapping::LoopClosureSummary& closure = *result->loop_closure;
+    std::fprintf(stderr, "loop closure: %zu keyframes, %zu of %zu revisits closed, largest correction "
+                "%.3f m (%.1f s)\n",
+                closure.keyframes, closure.closures, closure.candidates,
+                closure.largest_correction_m, result->loop_closure_s);
+  }
   return std::move(*result);
 }
 
@@ -154,6 +162,20 @@ void AddSlamReport(const robotio::RecordingReader& reader, const MapOptions& o,
   (*report)["ate_rmse_m"] = estimate ? nlohmann::json(estimate->ate_m.rmse) : nlohmann::json();
   (*report)["odometry_ate_rmse_m"] =
       odometry ? nlohmann::json(odometry->ate_m.rmse) : nlohmann::json();
+  if (slam.loop_closure) {
+    const auto before =
+        mapping::EvaluateTrajectory(truth, slam.trajectory_before_loop_closure, evaluation);
+    (*report)["ate_rmse_m_before_loop_closure"] =
+        before ? nlohmann::json(before->ate_m.rmse) : nlohmann::json();
+    const mapping::LoopClosureSummary& closure = *slam.loop_closure;
+    (*report)["loop_closure"] = {{"keyframes", closure.keyframes},
+                                 {"candidates", closure.candidates},
+                                 {"closures", closure.closures},
+                                 {"graph_converged", closure.graph.converged},
+                                 {"closures_dropped", closure.graph.closures_dropped},
+                                 {"largest_correction_m", closure.largest_correction_m},
+                                 {"seconds", slam.loop_closure_s}};
+  }
   const bool rpe = estimate && estimate->rpe;
   (*report)["rpe_trans_m_per_m"] = rpe ? nlohmann::json(estimate->rpe->trans_m_per_m) : nlohmann::json();
   (*report)["rpe_rot_deg_per_m"] = rpe ? nlohmann::json(estimate->rpe->rot_deg_per_m) : nlohmann::json();

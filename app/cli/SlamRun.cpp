@@ -127,6 +127,8 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
     slam.emplace(options.slam, options.mapping, rig);
   }
   result.tracking_only = tracking_only;
+  std::optional<mapping::LoopClosing> loop_closing;
+  if (slam && options.slam.loop_closure.enabled) loop_closing.emplace(options.slam.loop_closure);
 
   // Simulate mode: a clock at the recording's pace that the SLAM work advances; a scan
   // is taken when SLAM is free, and only the newest one that has arrived by then.
@@ -172,10 +174,26 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
     for (std::size_t k = 0; k < frames.size(); ++k) {
       result.frame_poses.push_back({frames[k].stamp_ns, step.frame_poses[k]});
     }
+    if (loop_closing) {
+      loop_closing->Offer(step.record.stamp_ns, step.record.pose, slam->last_registered_scan());
+    }
     if (progress) progress(static_cast<double>(s + 1) / static_cast<double>(scans.size()));
   }
   std::sort(result.frame_poses.begin(), result.frame_poses.end(),
             [](const auto& a, const auto& b) { return a.stamp_ns < b.stamp_ns; });
+  if (loop_closing) {
+    const auto start = Clock::now();
+    result.loop_closure = loop_closing->Close();
+    result.loop_closure_s = std::chrono::duration<double>(Clock::now() - start).count();
+    result.trajectory_before_loop_closure = result.trajectory;
+    auto correct = [&](robotio::Trajectory* trajectory) {
+      for (robotio::StampedPose& p : *trajectory) {
+        p.pose = loop_closing->Correct(p.stamp_ns, robotio::Pose2D::FromIsometry(p.pose)).ToIsometry();
+      }
+    };
+    correct(&result.trajectory);
+    correct(&result.frame_poses);
+  }
   if (tracker) {
     result.keyframes = tracker->keyframes();
     result.track_restarts = tracker->restarts();

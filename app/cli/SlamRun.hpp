@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,11 @@ struct SlamRunResult {
   std::size_t registrations_accepted = 0;
   std::size_t registrations_rejected = 0;  // Attempted, not applied.
   std::vector<SlamScanRecord> scans;  // One per processed scan.
+  // With loop closure (SlamConfig::loop_closure): `trajectory` and `frame_poses` are the
+  // corrected ones, this is what the pass itself gave, and the summary says what closed.
+  robotio::Trajectory trajectory_before_loop_closure;
+  std::optional<mapping::LoopClosureSummary> loop_closure;
+  double loop_closure_s = 0.0;  // Wall time of finding the closures and solving.
   mapping::ReferenceStrategy reference = mapping::ReferenceStrategy::kCombined;  // Used.
   // Wall time per processed scan of each stage (s).
   std::vector<double> preprocess_s, register_s, update_s, total_s;

@@ -100,6 +100,9 @@ SlamConfig ParseSlamConfig(robotio::ConfigNode& node) {
   if (auto registration = node.OptionalChild("registration")) {
     config.registration = ParseRegistrationConfig(*registration);
   }
+  if (auto loop_closure = node.OptionalChild("loop_closure")) {
+    config.loop_closure = ParseLoopClosureConfig(*loop_closure);
+  }
   return config;
 }
 
@@ -341,6 +344,7 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
     AddSurfaceSamples(Transformed(scan_map, pose_.Compose(step.predicted.Inverse())));
   }
   previous_scan_map_ = Transformed(sparse, pose_);
+  last_scan_ = sparse;
   step.update_s = SecondsSince(t);
   return step;
 }

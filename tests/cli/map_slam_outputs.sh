@@ -19,15 +19,26 @@ poses=$(grep -vc '^#' "$scratch/map/trajectory.tum")
 sed -n 2p "$csv" | grep -q ",none,0," || { echo "first scan was registered" >&2; exit 1; }
 registered=$(grep -c ",map,\|,previous," "$csv")
 [ "$registered" -ge $((rows - 1)) ] || { echo "$registered of $rows scans registered" >&2; exit 1; }
+# Loop closure runs by default and says what it did (a 2 s drive closes no loop).
+grep -q '"loop_closure": {' "$scratch/map/report.json" || {
+  echo "report.json has no loop_closure summary" >&2; exit 1; }
+grep -q '"closures": 0' "$scratch/map/report.json" || {
+  echo "a 2 s drive closed a loop" >&2; exit 1; }
+grep -q '"ate_rmse_m_before_loop_closure": [0-9]' "$scratch/map/report.json" || {
+  echo "report.json lacks the ATE before loop closure" >&2; exit 1; }
 
 # SLAM settings from a file, the registration fed ground truth as odometry.
-printf 'reference: previous\nmax_correction_per_rad: 0.1\n' > "$scratch/slam.yaml"
+printf 'reference: previous\nmax_correction_per_rad: 0.1\nloop_closure: {enabled: false}\n' \
+  > "$scratch/slam.yaml"
 "$dynamap" map --log "$scratch/rec" --out "$scratch/map2" --slam "$scratch/slam.yaml" \
   --slam-odometry groundtruth 2>/dev/null >/dev/null
 grep -q '"reference": "previous"' "$scratch/map2/report.json" || {
   echo "the settings file's reference was not used" >&2; exit 1; }
 grep -q '"slam_odometry": "groundtruth"' "$scratch/map2/report.json" || {
   echo "report.json does not say SLAM ran on ground truth" >&2; exit 1; }
+if grep -q '"loop_closure"' "$scratch/map2/report.json"; then
+  echo "loop closure ran although the settings file turned it off" >&2; exit 1
+fi
 # --reference wins over the file.
 "$dynamap" map --log "$scratch/rec" --out "$scratch/map3" --slam "$scratch/slam.yaml" \
   --reference map 2>/dev/null >/dev/null

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "dynamap/mapping/DualMap.hpp"
+#include "dynamap/mapping/LoopClosure.hpp"
 #include "dynamap/mapping/MappingConfig.hpp"
 #include "dynamap/mapping/Registration.hpp"
 #include "dynamap/robotio/ConfigReader.hpp"
@@ -101,6 +102,10 @@ struct SlamConfig {
   double heading_sigma_per_sqrt_s = 0.001;    // rad per √s (gyro noise, bias left over).
   double registration_sigma_m = 0.005;        // m, one registration's position noise.
   double registration_sigma_rad = 0.002;      // rad, its heading noise.
+  // After a pass over a recording, keyframes registered against older ones nearby close
+  // the loops the pass made, and the map is built again from the corrected poses
+  // (LoopClosure.hpp; dynamap map). Not used by SlamLoop itself.
+  LoopClosureConfig loop_closure;
   std::size_t min_scan_points = 200;       // Fewer preprocessed points: no registration.
   std::size_t min_reference_points = 500;  // Fewer map voxels: the map is not yet usable.
 };
@@ -140,6 +145,8 @@ class SlamLoop {
   [[nodiscard]] const robotio::Pose2D& pose() const { return pose_; }
   [[nodiscard]] const DualMap& map() const { return map_; }
   [[nodiscard]] const SlamConfig& config() const { return config_; }
+  // The last scan's points as registered (preprocessed, thinned, base frame at its time).
+  [[nodiscard]] const robotio::PointList& last_registered_scan() const { return last_scan_; }
   // Occupied static voxels near `around` (x/y within map_reference_radius_m, static
   // probability at least map_reference_min_probability), each as the mean of the scan
   // points seen in it (map_reference_surface_points) or as its centre, thinned to the
@@ -177,6 +184,7 @@ class SlamLoop {
   [[nodiscard]] robotio::Pose2D Fuse(const robotio::Pose2D& predicted,
                                      const robotio::Pose2D& registered);
   robotio::PointList previous_scan_map_;           // Last scan's points in the map frame.
+  robotio::PointList last_scan_;                   // The same in the base frame.
   // Running mean of the scan points that fell in each leaf voxel (map frame).
   struct SurfaceSample {
     Eigen::Vector3f sum = Eigen::Vector3f::Zero();

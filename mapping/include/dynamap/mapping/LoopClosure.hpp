@@ -1,0 +1,98 @@
+// Loop closure over a finished SLAM pass: keyframes (scans every half metre or so, with
+// the poses SLAM gave them), each registered against the local map of an older keyframe
+// near it, and a planar pose graph (PoseGraph.hpp) that bends the trajectory so that
+// places seen twice agree. SLAM's scan-to-map loop cannot correct a map once written
+// (thesis Algorithm 4 has no such step); this is where revisits do.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "dynamap/mapping/PoseGraph.hpp"
+#include "dynamap/mapping/Registration.hpp"
+#include "dynamap/robotio/ConfigReader.hpp"
+#include "dynamap/robotio/DepthProjection.hpp"
+#include "dynamap/robotio/Pose2D.hpp"
+
+namespace dynamap::mapping {
+
+struct LoopClosureConfig {
+  bool enabled = true;
+  double keyframe_distance_m = 0.5;  // A new keyframe after this much driving ...
+  double keyframe_angle_rad = 0.35;  // ... or this much turning.
+  // A loop: a keyframe near (x/y, by SLAM's poses) one at least this much older.
+  double min_time_gap_s = 20.0;
+  double search_radius_m = 1.0;
+  // The older keyframe's local map: it and this many keyframes on each side, placed by
+  // SLAM's poses (consistent over such a short stretch), thinned to the scan's voxel.
+  int local_map_half_width = 3;
+  double local_map_voxel_m = 0.1;
+  // A closure is kept when its registration converged this well and moves the newer
+  // keyframe relative to the older one by no more than SLAM could have got wrong.
+  double min_inlier_ratio = 0.7;
+  double max_fitness_rmse_m = 0.04;
+  double max_correction_m = 0.5;
+  double max_correction_rad = 0.1;
+  // Noise of SLAM's relative pose between consecutive keyframes (the sequence edges):
+  // position per √m driven plus a floor, heading per √rad turned plus a floor.
+  double sequence_sigma_m = 0.002;
+  double sequence_sigma_per_sqrt_m = 0.01;
+  double sequence_sigma_rad = 0.0005;
+  double sequence_sigma_per_sqrt_rad = 0.005;
+  // A closure's information is the registration's planar information (mean over its
+  // inlier pairs, so a corridor's axis gets almost none) times this: effective number of
+  // independent pairs / (point-to-plane noise)².
+  double closure_information_scale = 25.0 / (0.01 * 0.01);
+  RegistrationConfig registration;  // ICP for the closures.
+};
+
+// Reads a "loop_closure:" mapping; unknown keys are errors.
+[[nodiscard]] LoopClosureConfig ParseLoopClosureConfig(robotio::ConfigNode& node);
+
+struct LoopClosureSummary {
+  std::size_t keyframes = 0;
+  std::size_t candidates = 0;  // Registrations tried.
+  std::size_t closures = 0;    // Kept in the graph.
+  PoseGraphSummary graph;
+  double largest_correction_m = 0.0;  // Of any keyframe, by the optimisation.
+};
+
+class LoopClosing {
+ public:
+  explicit LoopClosing(LoopClosureConfig config);
+
+  // A scan SLAM placed at `pose` (T_map_base) with its registered points (base frame);
+  // kept as a keyframe when it is the first or the robot moved far enough since the
+  // last. Scans come in capture order. True when kept.
+  bool Offer(std::int64_t stamp_ns, const robotio::Pose2D& pose, const robotio::PointList& scan);
+
+  // Finds the closures, optimises the graph and keeps the corrected keyframe poses.
+  LoopClosureSummary Close();
+
+  // `pose` of a scan at `stamp_ns` moved by the correction of the keyframes around it
+  // (interpolated in time between the one before and the one after). Before Close(), or
+  // without keyframes, `pose` unchanged.
+  [[nodiscard]] robotio::Pose2D Correct(std::int64_t stamp_ns, const robotio::Pose2D& pose) const;
+  [[nodiscard]] std::size_t keyframes() const { return keyframes_.size(); }
+
+ private:
+  struct Keyframe {
+    std::int64_t stamp_ns = 0;
+    robotio::Pose2D pose;       // SLAM's.
+    robotio::Pose2D corrected;  // After Close().
+    robotio::PointList scan;    // Base frame.
+  };
+  // The older keyframe `centre`'s local map in its own frame.
+  [[nodiscard]] robotio::PointList LocalMap(std::size_t centre) const;
+  [[nodiscard]] PoseGraphEdge SequenceEdge(std::size_t from, std::size_t to) const;
+
+  LoopClosureConfig config_;
+  std::vector<Keyframe> keyframes_;
+  double driven_since_keyframe_ = 0.0;
+  double turned_since_keyframe_ = 0.0;
+  robotio::Pose2D last_pose_;
+  bool closed_ = false;
+};
+
+}  // namespace dynamap::mapping
