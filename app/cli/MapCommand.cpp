@@ -22,6 +22,7 @@
 #include "dynamap/mapping/MappingConfig.hpp"
 #include "dynamap/mapping/PointCloudFiles.hpp"
 #include "dynamap/mapping/TrajectoryEvaluation.hpp"
+#include "dynamap/mapping/TrajectoryPlot.hpp"
 #include "dynamap/robotio/AtomicFile.hpp"
 #include "dynamap/robotio/Pose2D.hpp"
 #include "dynamap/robotio/RecordingReader.hpp"
@@ -337,6 +338,18 @@ void RunMap(const MapOptions& o) {
     Check(robotio::WriteFileAtomically((out / "slam_scans.csv").string(),
                                        ScanRecordsCsv(slam->scans)));
     AddSlamReport(reader, o, *slam, &report);
+    // Where along the way the estimate was off, beside what loop closure and odometry
+    // alone made of it (not for a tracked camera: its ATE is aligned, the plot is not).
+    if (!reader.ground_truth().empty() && !slam->tracking_only) {
+      std::vector<mapping::PlottedTrajectory> lines{{"SLAM", slam->trajectory}};
+      if (slam->loop_closure) {
+        lines.push_back({"before loop closure", slam->trajectory_before_loop_closure});
+      }
+      lines.push_back({"odometry alone", slam->odometry});
+      const std::string plot = (out / "trajectory_error.png").string();
+      Check(mapping::WriteTrajectoryErrorPlot(plot, reader.ground_truth(), lines));
+      report["trajectory_error_plot"] = plot;
+    }
   }
   t = Clock::now();
   if (labelled) {
@@ -408,8 +421,8 @@ void RegisterMapCommand(CLI::App& app) {
   auto options = std::make_shared<MapOptions>();
   CLI::App* map = app.add_subcommand(
       "map", "Integrate a recording into the dual static/dynamic 3D map with SLAM (or known) poses; "
-             "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png, trajectory.tum, slam_scans.csv and "
-             "report.json");
+             "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png, trajectory.tum, slam_scans.csv, "
+             "trajectory_error.png (with ground truth) and report.json");
   map->add_option("--log", options->log,
                   "Recording directory (dynamap's or a TUM RGB-D sequence), or an OpenNI2 .oni "
                   "file; without odometry the camera is tracked by registration alone")

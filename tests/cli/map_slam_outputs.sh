@@ -26,6 +26,11 @@ grep -q '"closures": 0' "$scratch/map/report.json" || {
   echo "a 2 s drive closed a loop" >&2; exit 1; }
 grep -q '"ate_rmse_m_before_loop_closure": [0-9]' "$scratch/map/report.json" || {
   echo "report.json lacks the ATE before loop closure" >&2; exit 1; }
+# The recording has ground truth: the error over time is drawn.
+head -c 8 "$scratch/map/trajectory_error.png" | grep -q PNG || {
+  echo "no trajectory_error.png" >&2; exit 1; }
+grep -q '"trajectory_error_plot": ".*trajectory_error.png"' "$scratch/map/report.json" || {
+  echo "report.json does not name the plot" >&2; exit 1; }
 
 # SLAM settings from a file, the registration fed ground truth as odometry.
 printf 'reference: previous\nmax_correction_per_rad: 0.1\nloop_closure: {enabled: false}\n' \
