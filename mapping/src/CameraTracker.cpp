@@ -38,14 +38,6 @@ double RotationAngle(const Eigen::Isometry3d& delta) {
   return Eigen::AngleAxisd(delta.rotation()).angle();
 }
 
-robotio::PointList Transformed(const robotio::PointList& points, const Eigen::Isometry3d& T) {
-  const Eigen::Isometry3f Tf = T.cast<float>();
-  robotio::PointList out;
-  out.reserve(points.size());
-  for (const Eigen::Vector3f& p : points) out.push_back(Tf * p);
-  return out;
-}
-
 }  // namespace
 
 CameraTracker::CameraTracker(CameraTrackerConfig config, robotio::Rig rig)
@@ -86,8 +78,8 @@ TrackerStep CameraTracker::Track(const std::vector<robotio::DepthFrame>& frames)
   // leaves a lattice of centroids that moves with it and pulls registration towards no
   // motion (SlamLoop does the same).
   step.predicted = Predict(step.stamp_ns);
-  points = Transformed(
-      VoxelGridFilter(Transformed(points, step.predicted), config_.voxel_m),
+  points = TransformedPoints(
+      VoxelGridFilter(TransformedPoints(points, step.predicted), config_.voxel_m),
       step.predicted.inverse());
   step.scan_points = points.size();
   step.preprocess_s = Since(start);
@@ -133,7 +125,7 @@ TrackerStep CameraTracker::Track(const std::vector<robotio::DepthFrame>& frames)
   }
   // Only a scan whose pose is trusted may extend the map it is registered against.
   if (far && (first || step.accepted) && !points.empty()) {
-    local_map_.push_back({pose_, Transformed(points, pose_)});
+    local_map_.push_back({pose_, TransformedPoints(points, pose_)});
     while (static_cast<int>(local_map_.size()) > config_.local_map_keyframes) local_map_.pop_front();
     ++keyframes_total_;
     step.keyframe = true;

@@ -9,14 +9,6 @@
 namespace dynamap::mapping {
 namespace {
 
-robotio::PointList Placed(const robotio::PointList& points, const robotio::Pose2D& pose) {
-  const Eigen::Isometry3f T = pose.ToIsometry().cast<float>();
-  robotio::PointList out;
-  out.reserve(points.size());
-  for (const auto& p : points) out.push_back(T * p);
-  return out;
-}
-
 double Distance(const robotio::Pose2D& a, const robotio::Pose2D& b) {
   return std::hypot(a.x - b.x, a.y - b.y);
 }
@@ -74,7 +66,8 @@ robotio::PointList LoopClosing::LocalMap(std::size_t centre) const {
   const robotio::Pose2D& origin = keyframes_[centre].pose;
   robotio::PointList points;
   for (std::size_t k = first; k <= last; ++k) {
-    const robotio::PointList placed = Placed(keyframes_[k].scan, origin.Between(keyframes_[k].pose));
+    const robotio::PointList placed =
+        TransformedPoints(keyframes_[k].scan, origin.Between(keyframes_[k].pose).ToIsometry());
     points.insert(points.end(), placed.begin(), placed.end());
   }
   return config_.local_map_voxel_m > 0.0 ? VoxelGridFilter(points, config_.local_map_voxel_m)

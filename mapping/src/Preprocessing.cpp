@@ -6,6 +6,14 @@
 
 namespace dynamap::mapping {
 
+robotio::PointList TransformedPoints(const robotio::PointList& points, const Eigen::Isometry3d& T) {
+  const Eigen::Isometry3f Tf = T.cast<float>();
+  robotio::PointList out;
+  out.reserve(points.size());
+  for (const Eigen::Vector3f& p : points) out.push_back(Tf * p);
+  return out;
+}
+
 robotio::PointList VoxelGridFilter(const robotio::PointList& points, double leaf_m) {
   if (leaf_m <= 0.0) return points;
   auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();

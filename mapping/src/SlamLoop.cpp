@@ -20,11 +20,7 @@ double SecondsSince(Clock::time_point start) {
 }
 
 robotio::PointList Transformed(const robotio::PointList& points, const robotio::Pose2D& pose) {
-  const Eigen::Isometry3f T = pose.ToIsometry().cast<float>();
-  robotio::PointList out;
-  out.reserve(points.size());
-  for (const auto& p : points) out.push_back(T * p);
-  return out;
+  return TransformedPoints(points, pose.ToIsometry());
 }
 
 // The registered pose with its correction removed along directions the scan does not

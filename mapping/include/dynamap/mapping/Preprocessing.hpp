@@ -12,6 +12,10 @@
 
 namespace dynamap::mapping {
 
+// Every point moved by T (to the frame T maps into).
+[[nodiscard]] robotio::PointList TransformedPoints(const robotio::PointList& points,
+                                                   const Eigen::Isometry3d& T);
+
 // One point per occupied voxel of edge `leaf_m` (the centroid of its points), PCL's
 // VoxelGrid; non-finite points are dropped. leaf_m <= 0 returns the input.
 [[nodiscard]] robotio::PointList VoxelGridFilter(const robotio::PointList& points, double leaf_m);
