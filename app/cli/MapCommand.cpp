@@ -171,6 +171,8 @@ void AddSlamReport(const robotio::RecordingReader& reader, const MapOptions& o,
     const mapping::LoopClosureSummary& closure = *slam.loop_closure;
     (*report)["loop_closure"] = {{"keyframes", closure.keyframes},
                                  {"candidates", closure.candidates},
+                                 {"poor_fits", closure.poor_fits},
+                                 {"implausible", closure.implausible},
                                  {"closures", closure.closures},
                                  {"graph_converged", closure.graph.converged},
                                  {"closures_dropped", closure.graph.closures_dropped},

@@ -126,12 +126,14 @@ LoopClosureSummary LoopClosing::Close() {
     const RegistrationResult result = registration.Align(keyframes_[j].scan, guess.ToIsometry());
     if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
         result.fitness_rmse_m > config_.max_fitness_rmse_m) {
+      ++summary.poor_fits;
       continue;
     }
     const robotio::Pose2D measured = robotio::Pose2D::FromIsometry(result.T_target_source);
     const robotio::Pose2D correction = guess.Between(measured);
     if (std::hypot(correction.x, correction.y) > config_.max_correction_m ||
         std::abs(correction.theta) > config_.max_correction_rad) {
+      ++summary.implausible;
       continue;
     }
     PoseGraphEdge edge;
