@@ -339,6 +339,10 @@ void RunMap(const MapOptions& o) {
     Check(robotio::WriteTumTrajectory(slam->trajectory, (out / "trajectory.tum").string()));
     Check(robotio::WriteFileAtomically((out / "slam_scans.csv").string(),
                                        ScanRecordsCsv(slam->scans)));
+    if (slam->loop_closure) {
+      Check(robotio::WriteFileAtomically((out / "loop_closures.csv").string(),
+                                         LoopClosureAttemptsCsv(slam->loop_closure->attempts)));
+    }
     AddSlamReport(reader, o, *slam, &report);
     // Where along the way the estimate was off, beside what loop closure and odometry
     // alone made of it (not for a tracked camera: its ATE is aligned, the plot is not).
@@ -424,7 +428,7 @@ void RegisterMapCommand(CLI::App& app) {
   CLI::App* map = app.add_subcommand(
       "map", "Integrate a recording into the dual static/dynamic 3D map with SLAM (or known) poses; "
              "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png, trajectory.tum, slam_scans.csv, "
-             "trajectory_error.png (with ground truth) and report.json");
+             "loop_closures.csv, trajectory_error.png (with ground truth) and report.json");
   map->add_option("--log", options->log,
                   "Recording directory (dynamap's or a TUM RGB-D sequence), or an OpenNI2 .oni "
                   "file; without odometry the camera is tracked by registration alone")

@@ -1,5 +1,6 @@
 #include "dynamap/mapping/LoopClosure.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -11,6 +12,12 @@ namespace {
 
 double Distance(const robotio::Pose2D& a, const robotio::Pose2D& b) {
   return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+double Structure(const Eigen::Matrix3d& information) {
+  const Eigen::Vector3d values =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(information).eigenvalues();
+  return values(2) > 0.0 ? values(0) / values(2) : 0.0;
 }
 
 }  // namespace
@@ -100,6 +107,8 @@ LoopClosureSummary LoopClosing::Close() {
 
   std::vector<PoseGraphEdge> edges;
   for (std::size_t k = 1; k < keyframes_.size(); ++k) edges.push_back(SequenceEdge(k - 1, k));
+  const std::size_t sequence_edges = edges.size();
+  std::vector<std::size_t> closure_attempt;  // Per closure edge, its attempt.
 
   Registration registration(config_.registration);
   std::size_t target_of = keyframes_.size();  // Keyframe whose local map is the target.
@@ -124,34 +133,42 @@ LoopClosureSummary LoopClosing::Close() {
     }
     const robotio::Pose2D guess = keyframes_[best].pose.Between(keyframes_[j].pose);
     const RegistrationResult result = registration.Align(keyframes_[j].scan, guess.ToIsometry());
+    LoopClosureAttempt attempt{keyframes_[best].stamp_ns, keyframes_[j].stamp_ns, guess,
+                               robotio::Pose2D::FromIsometry(result.T_target_source),
+                               result.fitness_rmse_m, result.inlier_ratio,
+                               Structure(result.planar_information), "closed"};
+    const robotio::Pose2D correction = guess.Between(attempt.measured);
     if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
         result.fitness_rmse_m > config_.max_fitness_rmse_m) {
+      attempt.outcome = "poor fit";
       ++summary.poor_fits;
-      continue;
-    }
-    const robotio::Pose2D measured = robotio::Pose2D::FromIsometry(result.T_target_source);
-    const robotio::Pose2D correction = guess.Between(measured);
-    if (std::hypot(correction.x, correction.y) > config_.max_correction_m ||
-        std::abs(correction.theta) > config_.max_correction_rad) {
+    } else if (std::hypot(correction.x, correction.y) > config_.max_correction_m ||
+               std::abs(correction.theta) > config_.max_correction_rad) {
+      attempt.outcome = "implausible";
       ++summary.implausible;
-      continue;
+    } else {
+      PoseGraphEdge edge;
+      edge.from = best;
+      edge.to = j;
+      edge.measured = attempt.measured;
+      // The registration's information is in the target (older keyframe's) frame with
+      // the yaw about the source origin: the same frame and yaw as the edge's error.
+      edge.information = result.planar_information * config_.closure_information_scale;
+      edge.closure = true;
+      edges.push_back(edge);
+      closure_attempt.push_back(summary.attempts.size());
+      ++summary.closures;
     }
-    PoseGraphEdge edge;
-    edge.from = best;
-    edge.to = j;
-    edge.measured = measured;
-    // The registration's information is in the target (older keyframe's) frame with the
-    // yaw about the source origin; the edge's error is in the same frame, its yaw the same.
-    edge.information = result.planar_information * config_.closure_information_scale;
-    edge.closure = true;
-    edges.push_back(edge);
-    ++summary.closures;
+    summary.attempts.push_back(attempt);
   }
   if (summary.closures == 0) return summary;
 
   std::vector<robotio::Pose2D> poses;
   for (const Keyframe& k : keyframes_) poses.push_back(k.pose);
   summary.graph = OptimizePoseGraph(&poses, edges);
+  for (std::size_t e : summary.graph.dropped) {
+    summary.attempts[closure_attempt[e - sequence_edges]].outcome = "dropped";
+  }
   for (std::size_t k = 0; k < keyframes_.size(); ++k) {
     keyframes_[k].corrected = poses[k];
     summary.largest_correction_m =

@@ -118,6 +118,7 @@ PoseGraphSummary OptimizePoseGraph(std::vector<robotio::Pose2D>* poses,
     if (worst == edges.size()) break;
     use[worst] = false;
     ++summary.closures_dropped;
+    summary.dropped.push_back(worst);
   }
   for (std::size_t i = 0; i < poses->size(); ++i) {
     (*poses)[i] = {state[i][0], state[i][1], robotio::WrapAngle(state[i][2])};

@@ -116,9 +116,24 @@ TEST(LoopClosure, ARevisitBendsADriftedLapBackOntoTheTruth) {
   ASSERT_GT(worst_before, 0.1);
 
   const LoopClosureSummary summary = closing.Close();
+  auto truth_of = [&](std::size_t k) { return truth[k]; };
   EXPECT_EQ(summary.keyframes, kept);
   EXPECT_GE(summary.closures, 3u);
   EXPECT_EQ(summary.closures + summary.poor_fits + summary.implausible, summary.candidates);
+  ASSERT_EQ(summary.attempts.size(), summary.candidates);
+  std::size_t closed = 0;
+  for (const LoopClosureAttempt& attempt : summary.attempts) {
+    EXPECT_GE(attempt.newer_stamp_ns - attempt.older_stamp_ns, Stamp(20));
+    if (attempt.outcome != "closed") continue;
+    ++closed;
+    // A kept closure measured the true relative pose, not SLAM's drifted guess.
+    const std::size_t older = static_cast<std::size_t>(attempt.older_stamp_ns / Stamp(1));
+    const std::size_t newer = static_cast<std::size_t>(attempt.newer_stamp_ns / Stamp(1));
+    const Pose2D truth = truth_of(older).Between(truth_of(newer));
+    EXPECT_LT(Distance(attempt.measured, truth), 0.02);
+    EXPECT_LT(Distance(attempt.measured, truth), Distance(attempt.guess, truth));
+  }
+  EXPECT_EQ(closed, summary.closures - summary.graph.closures_dropped);
   std::printf("keyframes %zu, candidates %zu, closures %zu, dropped %zu\n", summary.keyframes,
               summary.candidates, summary.closures, summary.graph.closures_dropped);
   EXPECT_TRUE(summary.graph.converged);
