@@ -69,12 +69,22 @@ robotio::Status WriteTrajectoryErrorPlot(const std::string& file,
     return robotio::Error{file + ": no estimated pose matches a ground-truth stamp; nothing to plot"};
   }
   cv::Mat image(kHeight, kWidth, CV_8UC3, cv::Scalar(255, 255, 255));
+  // Grid lines at a round step (1, 2 or 5 × 10ⁿ m), four to ten of them.
+  const double magnitude = std::pow(10.0, std::floor(std::log10(e_max / 4.0)));
+  double step = magnitude;
+  for (double factor : {1.0, 2.0, 5.0, 10.0}) {
+    step = factor * magnitude;
+    if (e_max / step <= 10.0) break;
+  }
+  const double e_top = std::max(1.05 * e_max, step);
   auto px = [&](double t) { return kLeft + static_cast<int>(t / t_max * (kRight - kLeft)); };
-  auto py = [&](double e) { return kBottom - static_cast<int>(e / (1.1 * e_max) * (kBottom - kTop)); };
-  for (int i = 1; i <= 4; ++i) {
-    const double e = 1.1 * e_max * i / 4.0;
+  auto py = [&](double e) { return kBottom - static_cast<int>(e / e_top * (kBottom - kTop)); };
+  for (double e = step; e <= e_top; e += step) {
     cv::line(image, {kLeft + 1, py(e)}, {kRight - 1, py(e)}, {225, 225, 225}, 1);
-    Text(&image, Format("%.3f", e), {8, py(e) + 5}, 0.4);
+    const int decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
+    char label[32];
+    std::snprintf(label, sizeof(label), "%.*f", decimals, e);
+    Text(&image, label, {8, py(e) + 5}, 0.4);
   }
   for (int i = 0; i <= 5; ++i) {
     const double t = t_max * i / 5.0;
