@@ -107,7 +107,7 @@ SlamRunResult RunSlamPass(const robotio::RecordingReader& reader, const MapOptio
     const mapping::LoopClosureSummary& closure = *result->loop_closure;
     std::fprintf(stderr, "loop closure: %zu keyframes, %zu of %zu revisits closed, largest correction "
                 "%.3f m (%.1f s)\n",
-                closure.keyframes, closure.closures, closure.candidates,
+                closure.keyframes, closure.Count("closed"), closure.attempts.size(),
                 closure.largest_correction_m, result->loop_closure_s);
   }
   return std::move(*result);
@@ -170,12 +170,12 @@ void AddSlamReport(const robotio::RecordingReader& reader, const MapOptions& o,
         before ? nlohmann::json(before->ate_m.rmse) : nlohmann::json();
     const mapping::LoopClosureSummary& closure = *slam.loop_closure;
     (*report)["loop_closure"] = {{"keyframes", closure.keyframes},
-                                 {"candidates", closure.candidates},
-                                 {"poor_fits", closure.poor_fits},
-                                 {"implausible", closure.implausible},
-                                 {"closures", closure.closures},
+                                 {"candidates", closure.attempts.size()},
+                                 {"poor_fits", closure.Count("poor fit")},
+                                 {"implausible", closure.Count("implausible")},
+                                 {"closures", closure.Count("closed") + closure.Count("dropped")},
                                  {"graph_converged", closure.graph.converged},
-                                 {"closures_dropped", closure.graph.closures_dropped},
+                                 {"closures_dropped", closure.Count("dropped")},
                                  {"largest_correction_m", closure.largest_correction_m},
                                  {"seconds", slam.loop_closure_s}};
   }

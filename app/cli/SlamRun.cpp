@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <optional>
 
-#include <Eigen/Eigenvalues>
 
 #include "cli/RecordingScans.hpp"
 #include "dynamap/robotio/Time.hpp"
@@ -26,17 +25,11 @@ struct ScanOutcome {
   double preprocess_s = 0.0, register_s = 0.0, update_s = 0.0;
 };
 
-double Structure(const Eigen::Matrix3d& planar_information) {
-  const Eigen::Vector3d eigenvalues =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(planar_information).eigenvalues();
-  return eigenvalues(2) > 0.0 ? eigenvalues(0) / eigenvalues(2) : 0.0;
-}
-
 void FillRegistration(const mapping::RegistrationResult& registration, SlamScanRecord* record) {
   record->fitness_rmse_m = registration.fitness_rmse_m;
   record->inlier_ratio = registration.inlier_ratio;
   record->iterations = registration.iterations;
-  record->structure = Structure(registration.planar_information);
+  record->structure = mapping::PlanarStructure(registration.planar_information);
 }
 
 ScanOutcome ProcessWithOdometry(mapping::SlamLoop& slam, const mapping::Trajectory2D& dead_reckoning,
@@ -219,10 +212,6 @@ std::string ScanRecordsCsv(const std::vector<SlamScanRecord>& scans) {
   }
   return csv;
 }
-
-}  // namespace dynamap::app
-
-namespace dynamap::app {
 
 std::string LoopClosureAttemptsCsv(const std::vector<mapping::LoopClosureAttempt>& attempts) {
   std::string csv =

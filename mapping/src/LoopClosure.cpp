@@ -1,6 +1,5 @@
 #include "dynamap/mapping/LoopClosure.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -14,11 +13,7 @@ double Distance(const robotio::Pose2D& a, const robotio::Pose2D& b) {
   return std::hypot(a.x - b.x, a.y - b.y);
 }
 
-double Structure(const Eigen::Matrix3d& information) {
-  const Eigen::Vector3d values =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(information).eigenvalues();
-  return values(2) > 0.0 ? values(0) / values(2) : 0.0;
-}
+
 
 }  // namespace
 
@@ -44,6 +39,12 @@ LoopClosureConfig ParseLoopClosureConfig(robotio::ConfigNode& node) {
     config.registration = ParseRegistrationConfig(*registration);
   }
   return config;
+}
+
+std::size_t LoopClosureSummary::Count(const std::string& outcome) const {
+  return static_cast<std::size_t>(std::count_if(
+      attempts.begin(), attempts.end(),
+      [&](const LoopClosureAttempt& attempt) { return attempt.outcome == outcome; }));
 }
 
 LoopClosing::LoopClosing(LoopClosureConfig config) : config_(std::move(config)) {}
@@ -126,7 +127,6 @@ LoopClosureSummary LoopClosing::Close() {
       }
     }
     if (best == keyframes_.size()) continue;
-    ++summary.candidates;
     if (target_of != best) {
       registration.SetTarget(LocalMap(best));
       target_of = best;
@@ -136,16 +136,14 @@ LoopClosureSummary LoopClosing::Close() {
     LoopClosureAttempt attempt{keyframes_[best].stamp_ns, keyframes_[j].stamp_ns, guess,
                                robotio::Pose2D::FromIsometry(result.T_target_source),
                                result.fitness_rmse_m, result.inlier_ratio,
-                               Structure(result.planar_information), "closed"};
+                               PlanarStructure(result.planar_information), "closed"};
     const robotio::Pose2D correction = guess.Between(attempt.measured);
     if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
         result.fitness_rmse_m > config_.max_fitness_rmse_m) {
       attempt.outcome = "poor fit";
-      ++summary.poor_fits;
     } else if (std::hypot(correction.x, correction.y) > config_.max_correction_m ||
                std::abs(correction.theta) > config_.max_correction_rad) {
       attempt.outcome = "implausible";
-      ++summary.implausible;
     } else {
       PoseGraphEdge edge;
       edge.from = best;
@@ -157,11 +155,10 @@ LoopClosureSummary LoopClosing::Close() {
       edge.closure = true;
       edges.push_back(edge);
       closure_attempt.push_back(summary.attempts.size());
-      ++summary.closures;
     }
     summary.attempts.push_back(attempt);
   }
-  if (summary.closures == 0) return summary;
+  if (closure_attempt.empty()) return summary;
 
   std::vector<robotio::Pose2D> poses;
   for (const Keyframe& k : keyframes_) poses.push_back(k.pose);

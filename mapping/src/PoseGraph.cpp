@@ -117,7 +117,6 @@ PoseGraphSummary OptimizePoseGraph(std::vector<robotio::Pose2D>* poses,
     }
     if (worst == edges.size()) break;
     use[worst] = false;
-    ++summary.closures_dropped;
     summary.dropped.push_back(worst);
   }
   for (std::size_t i = 0; i < poses->size(); ++i) {

@@ -1,5 +1,7 @@
 #include "dynamap/mapping/Registration.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <pcl/console/print.h>
 #include <pcl/features/normal_3d.h>
 #include <pcl/point_cloud.h>
@@ -195,6 +197,12 @@ RegistrationResult RegisterScans(const robotio::PointList& source,
   Registration registration(config);
   registration.SetTarget(target);
   return registration.Align(source, guess_T_target_source);
+}
+
+double PlanarStructure(const Eigen::Matrix3d& planar_information) {
+  const Eigen::Vector3d values =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(planar_information).eigenvalues();
+  return values(2) > 0.0 ? values(0) / values(2) : 0.0;
 }
 
 }  // namespace dynamap::mapping

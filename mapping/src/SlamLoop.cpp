@@ -276,7 +276,7 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
   step.pose = step.predicted;
   // Thinned for ICP: a coarser scan and target register as well (the map update below
   // uses every pixel) in a fraction of the time. ICP takes the scan in the base frame.
-  const robotio::PointList sparse = Transformed(
+  robotio::PointList sparse = Transformed(
       config_.registration_voxel_m > 0.0 ? VoxelGridFilter(scan_map, config_.registration_voxel_m)
                                          : scan_map,
       step.predicted.Inverse());
@@ -340,7 +340,7 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
     AddSurfaceSamples(Transformed(scan_map, pose_.Compose(step.predicted.Inverse())));
   }
   previous_scan_map_ = Transformed(sparse, pose_);
-  last_scan_ = sparse;
+  last_scan_ = std::move(sparse);
   step.update_s = SecondsSince(t);
   return step;
 }

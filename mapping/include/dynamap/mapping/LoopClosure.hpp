@@ -69,13 +69,13 @@ struct LoopClosureAttempt {
 
 struct LoopClosureSummary {
   std::size_t keyframes = 0;
-  std::size_t candidates = 0;      // Registrations tried.
-  std::size_t poor_fits = 0;       // Not converged, too few inliers or too large an RMS.
-  std::size_t implausible = 0;     // Would move the pair further than the gate allows.
-  std::size_t closures = 0;        // Into the graph (some may be dropped there).
   PoseGraphSummary graph;
   double largest_correction_m = 0.0;  // Of any keyframe, by the optimisation.
-  std::vector<LoopClosureAttempt> attempts;
+  std::vector<LoopClosureAttempt> attempts;  // Every revisit registered.
+  // Attempts with this outcome ("closed", "poor fit": not converged, too few inliers or
+  // too large an RMS, "implausible": would move the pair further than the gate allows,
+  // "dropped").
+  [[nodiscard]] std::size_t Count(const std::string& outcome) const;
 };
 
 class LoopClosing {

@@ -26,8 +26,8 @@ struct PoseGraphEdge {
 struct PoseGraphSummary {
   bool converged = false;
   int iterations = 0;                 // Of the last solve.
-  std::size_t closures_dropped = 0;   // Disagreed with the rest.
-  std::vector<std::size_t> dropped;   // Their indices in the edge list.
+  // Closures that disagreed with the rest, by their index in the edge list.
+  std::vector<std::size_t> dropped;
   double initial_cost = 0.0;  // ½ Σ of squared whitened residuals (after the loss).
   double final_cost = 0.0;
 };

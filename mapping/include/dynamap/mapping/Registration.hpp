@@ -76,6 +76,10 @@ class Registration {
   std::unique_ptr<Impl> impl_;
 };
 
+// Smallest / largest eigenvalue of a planar information matrix: how well a registration
+// pinned x, y and yaw (near 0 along a bare corridor); 0 without information.
+[[nodiscard]] double PlanarStructure(const Eigen::Matrix3d& planar_information);
+
 // One-shot convenience: SetTarget + Align.
 [[nodiscard]] RegistrationResult RegisterScans(const robotio::PointList& source,
                                                const robotio::PointList& target,
