@@ -75,7 +75,8 @@ struct SlamConfig {
   // odometry (0.06 m with 2 s, 0.07 m with 1 s; 2 s left a short low-resolution drive with
   // too little of what came into view). A robot standing in a crowd is kept from registering to
   // people who left by the fusion below, which gives no weight to a registration while
-  // odometry is certain (docs/RESULTS.md).
+  // odometry is certain (docs/RESULTS.md). A max age of 0 rebuilds it for every scan, as
+  // the thesis's loop does (Table 5.1 in docs/RESULTS.md).
   double reference_refresh_m = 0.5;  // m.
   double reference_max_age_s = 1.0;  // s of capture time.
   // Leaf of the voxel grid thinning the scan and the map target for ICP only (the map
