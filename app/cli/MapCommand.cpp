@@ -107,7 +107,8 @@ SlamRunResult RunSlamPass(const robotio::RecordingReader& reader, const MapOptio
     const mapping::LoopClosureSummary& closure = *result->loop_closure;
     std::fprintf(stderr, "loop closure: %zu keyframes, %zu of %zu revisits closed, largest correction "
                 "%.3f m (%.1f s)\n",
-                closure.keyframes, closure.Count("closed"), closure.attempts.size(),
+                closure.keyframes, closure.Count(mapping::LoopClosureOutcome::kClosed),
+                closure.attempts.size(),
                 closure.largest_correction_m, result->loop_closure_s);
   }
   return std::move(*result);
@@ -169,13 +170,14 @@ void AddSlamReport(const robotio::RecordingReader& reader, const MapOptions& o,
     (*report)["ate_rmse_m_before_loop_closure"] =
         before ? nlohmann::json(before->ate_m.rmse) : nlohmann::json();
     const mapping::LoopClosureSummary& closure = *slam.loop_closure;
+    using Outcome = mapping::LoopClosureOutcome;
     (*report)["loop_closure"] = {{"keyframes", closure.keyframes},
                                  {"candidates", closure.attempts.size()},
-                                 {"poor_fits", closure.Count("poor fit")},
-                                 {"implausible", closure.Count("implausible")},
-                                 {"closures", closure.Count("closed") + closure.Count("dropped")},
+                                 {"poor_fits", closure.Count(Outcome::kPoorFit)},
+                                 {"implausible", closure.Count(Outcome::kImplausible)},
+                                 {"closures", closure.Count(Outcome::kClosed) + closure.Count(Outcome::kDropped)},
                                  {"graph_converged", closure.graph.converged},
-                                 {"closures_dropped", closure.Count("dropped")},
+                                 {"closures_dropped", closure.Count(Outcome::kDropped)},
                                  {"largest_correction_m", closure.largest_correction_m},
                                  {"seconds", slam.loop_closure_s}};
   }

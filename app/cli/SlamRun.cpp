@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <optional>
 
-
 #include "cli/RecordingScans.hpp"
 #include "dynamap/robotio/Time.hpp"
 
@@ -223,7 +222,7 @@ std::string LoopClosureAttemptsCsv(const std::vector<mapping::LoopClosureAttempt
                   robotio::NanosToSeconds(a.older_stamp_ns),
                   robotio::NanosToSeconds(a.newer_stamp_ns), a.guess.x, a.guess.y, a.guess.theta,
                   a.measured.x, a.measured.y, a.measured.theta, a.fitness_rmse_m, a.inlier_ratio,
-                  a.structure, a.outcome.c_str());
+                  a.structure, mapping::LoopClosureOutcomeName(a.outcome));
     csv += line;
   }
   return csv;

@@ -13,9 +13,21 @@ double Distance(const robotio::Pose2D& a, const robotio::Pose2D& b) {
   return std::hypot(a.x - b.x, a.y - b.y);
 }
 
-
-
 }  // namespace
+
+const char* LoopClosureOutcomeName(LoopClosureOutcome outcome) {
+  switch (outcome) {
+    case LoopClosureOutcome::kClosed:
+      return "closed";
+    case LoopClosureOutcome::kPoorFit:
+      return "poor fit";
+    case LoopClosureOutcome::kImplausible:
+      return "implausible";
+    case LoopClosureOutcome::kDropped:
+      return "dropped";
+  }
+  return "closed";
+}
 
 LoopClosureConfig ParseLoopClosureConfig(robotio::ConfigNode& node) {
   LoopClosureConfig config;
@@ -41,7 +53,7 @@ LoopClosureConfig ParseLoopClosureConfig(robotio::ConfigNode& node) {
   return config;
 }
 
-std::size_t LoopClosureSummary::Count(const std::string& outcome) const {
+std::size_t LoopClosureSummary::Count(LoopClosureOutcome outcome) const {
   return static_cast<std::size_t>(std::count_if(
       attempts.begin(), attempts.end(),
       [&](const LoopClosureAttempt& attempt) { return attempt.outcome == outcome; }));
@@ -136,14 +148,15 @@ LoopClosureSummary LoopClosing::Close() {
     LoopClosureAttempt attempt{keyframes_[best].stamp_ns, keyframes_[j].stamp_ns, guess,
                                robotio::Pose2D::FromIsometry(result.T_target_source),
                                result.fitness_rmse_m, result.inlier_ratio,
-                               PlanarStructure(result.planar_information), "closed"};
+                               PlanarStructure(result.planar_information),
+                               LoopClosureOutcome::kClosed};
     const robotio::Pose2D correction = guess.Between(attempt.measured);
     if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
         result.fitness_rmse_m > config_.max_fitness_rmse_m) {
-      attempt.outcome = "poor fit";
+      attempt.outcome = LoopClosureOutcome::kPoorFit;
     } else if (std::hypot(correction.x, correction.y) > config_.max_correction_m ||
                std::abs(correction.theta) > config_.max_correction_rad) {
-      attempt.outcome = "implausible";
+      attempt.outcome = LoopClosureOutcome::kImplausible;
     } else {
       PoseGraphEdge edge;
       edge.from = best;
@@ -164,7 +177,7 @@ LoopClosureSummary LoopClosing::Close() {
   for (const Keyframe& k : keyframes_) poses.push_back(k.pose);
   summary.graph = OptimizePoseGraph(&poses, edges);
   for (std::size_t e : summary.graph.dropped) {
-    summary.attempts[closure_attempt[e - sequence_edges]].outcome = "dropped";
+    summary.attempts[closure_attempt[e - sequence_edges]].outcome = LoopClosureOutcome::kDropped;
   }
   for (std::size_t k = 0; k < keyframes_.size(); ++k) {
     keyframes_[k].corrected = poses[k];

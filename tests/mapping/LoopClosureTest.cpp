@@ -116,22 +116,21 @@ TEST(LoopClosure, ARevisitBendsADriftedLapBackOntoTheTruth) {
   ASSERT_GT(worst_before, 0.1);
 
   const LoopClosureSummary summary = closing.Close();
-  auto truth_of = [&](std::size_t k) { return truth[k]; };
   EXPECT_EQ(summary.keyframes, kept);
-  EXPECT_GE(summary.Count("closed"), 3u);
+  EXPECT_GE(summary.Count(LoopClosureOutcome::kClosed), 3u);
   EXPECT_TRUE(summary.graph.dropped.empty());
   for (const LoopClosureAttempt& attempt : summary.attempts) {
     EXPECT_GE(attempt.newer_stamp_ns - attempt.older_stamp_ns, Stamp(20));
-    if (attempt.outcome != "closed") continue;
+    if (attempt.outcome != LoopClosureOutcome::kClosed) continue;
     // A kept closure measured the true relative pose, not SLAM's drifted guess.
     const std::size_t older = static_cast<std::size_t>(attempt.older_stamp_ns / Stamp(1));
     const std::size_t newer = static_cast<std::size_t>(attempt.newer_stamp_ns / Stamp(1));
-    const Pose2D truth = truth_of(older).Between(truth_of(newer));
-    EXPECT_LT(Distance(attempt.measured, truth), 0.02);
-    EXPECT_LT(Distance(attempt.measured, truth), Distance(attempt.guess, truth));
+    const Pose2D true_relative = truth[older].Between(truth[newer]);
+    EXPECT_LT(Distance(attempt.measured, true_relative), 0.02);
+    EXPECT_LT(Distance(attempt.measured, true_relative), Distance(attempt.guess, true_relative));
   }
   std::printf("keyframes %zu, revisits tried %zu, closed %zu\n", summary.keyframes,
-              summary.attempts.size(), summary.Count("closed"));
+              summary.attempts.size(), summary.Count(LoopClosureOutcome::kClosed));
   EXPECT_TRUE(summary.graph.converged);
   EXPECT_GT(summary.largest_correction_m, 0.1);
   // The first lap's start and the overlap after it now agree; every step in between is
@@ -163,7 +162,8 @@ TEST(LoopClosure, WithoutARevisitNothingMoves) {
   }
   EXPECT_EQ(closing.Correct(Stamp(10), slam[10]).x, slam[10].x);  // Not yet closed.
   const LoopClosureSummary summary = closing.Close();
-  EXPECT_EQ(summary.Count("closed") + summary.Count("dropped"), 0u);
+  EXPECT_EQ(summary.Count(LoopClosureOutcome::kClosed) + summary.Count(LoopClosureOutcome::kDropped),
+            0u);
   EXPECT_EQ(summary.largest_correction_m, 0.0);
   for (std::size_t k = 0; k < truth.size(); ++k) {
     const Pose2D corrected = closing.Correct(Stamp(k), slam[k]);
@@ -188,6 +188,13 @@ TEST(LoopClosure, ReadsItsSettingsAndRejectsUnknownKeys) {
   ASSERT_FALSE(refused.ok());
   EXPECT_NE(refused.error().message.find("loop.yaml"), std::string::npos);
   EXPECT_NE(refused.error().message.find("keyframe_distance"), std::string::npos);
+}
+
+TEST(LoopClosure, OutcomesHaveTheNamesLoopClosuresCsvUses) {
+  EXPECT_STREQ(LoopClosureOutcomeName(LoopClosureOutcome::kClosed), "closed");
+  EXPECT_STREQ(LoopClosureOutcomeName(LoopClosureOutcome::kPoorFit), "poor fit");
+  EXPECT_STREQ(LoopClosureOutcomeName(LoopClosureOutcome::kImplausible), "implausible");
+  EXPECT_STREQ(LoopClosureOutcomeName(LoopClosureOutcome::kDropped), "dropped");
 }
 
 }  // namespace

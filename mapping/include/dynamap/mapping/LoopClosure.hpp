@@ -7,7 +7,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "dynamap/mapping/PoseGraph.hpp"
@@ -54,6 +53,16 @@ struct LoopClosureConfig {
 // Reads a "loop_closure:" mapping; unknown keys are errors.
 [[nodiscard]] LoopClosureConfig ParseLoopClosureConfig(robotio::ConfigNode& node);
 
+// What became of a revisit tried.
+enum class LoopClosureOutcome {
+  kClosed,       // Into the pose graph and kept there.
+  kPoorFit,      // Not converged, too few inliers or too large an RMS.
+  kImplausible,  // Would move the pair further than the gate allows.
+  kDropped,      // Into the graph, dropped there: it disagreed with the rest.
+};
+// "closed", "poor fit", "implausible", "dropped" (loop_closures.csv).
+[[nodiscard]] const char* LoopClosureOutcomeName(LoopClosureOutcome outcome);
+
 // One revisit tried: the older keyframe's local map against the newer keyframe's scan.
 struct LoopClosureAttempt {
   std::int64_t older_stamp_ns = 0;
@@ -63,8 +72,7 @@ struct LoopClosureAttempt {
   double fitness_rmse_m = 0.0;
   double inlier_ratio = 0.0;
   double structure = 0.0;  // Smallest / largest eigenvalue of its planar information.
-  // "closed", "poor fit", "implausible" or "dropped" (by the graph: it disagreed).
-  std::string outcome;
+  LoopClosureOutcome outcome = LoopClosureOutcome::kClosed;
 };
 
 struct LoopClosureSummary {
@@ -72,10 +80,8 @@ struct LoopClosureSummary {
   PoseGraphSummary graph;
   double largest_correction_m = 0.0;  // Of any keyframe, by the optimisation.
   std::vector<LoopClosureAttempt> attempts;  // Every revisit registered.
-  // Attempts with this outcome ("closed", "poor fit": not converged, too few inliers or
-  // too large an RMS, "implausible": would move the pair further than the gate allows,
-  // "dropped").
-  [[nodiscard]] std::size_t Count(const std::string& outcome) const;
+  // Attempts with this outcome.
+  [[nodiscard]] std::size_t Count(LoopClosureOutcome outcome) const;
 };
 
 class LoopClosing {
