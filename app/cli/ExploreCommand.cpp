@@ -149,11 +149,17 @@ void Run(const ExploreOptions& options) {
       }
       known_m2 *= s.grid->resolution_m * s.grid->resolution_m;
     }
-    char detail[260];
+    char loops[32] = "";
+    // Closures that moved the pose so far (only when they are made as the robot goes).
+    if (config.poses == runtime::PoseSource::kSlam && config.slam.loop_closure.enabled &&
+        config.slam.loop_closure.correct_while_running) {
+      std::snprintf(loops, sizeof(loops), "  loops %lld", static_cast<long long>(s.loop_closures));
+    }
+    char detail[300];
     std::snprintf(detail, sizeof(detail),
-                  "t %6.1f s  known floor %6.1f m2  driven %6.1f m  v %4.2f w %5.2f  stops %lld  %s%s",
+                  "t %6.1f s  known floor %6.1f m2  driven %6.1f m  v %4.2f w %5.2f  stops %lld%s  %s%s",
                   s.sim_time_s, known_m2, s.distance_m, s.command.v, s.command.omega,
-                  static_cast<long long>(s.guard_stops), TargetText(s),
+                  static_cast<long long>(s.guard_stops), loops, TargetText(s),
                   options.device && !pad_state->held ? "  (LB released: base held)" : "");
     progress.Update(s.sim_time_s / (*runtime)->config().max_time_s, detail);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));

@@ -343,7 +343,7 @@ void RunMap(const MapOptions& o) {
                                        ScanRecordsCsv(slam->scans)));
     if (slam->loop_closure) {
       Check(robotio::WriteFileAtomically((out / "loop_closures.csv").string(),
-                                         LoopClosureAttemptsCsv(slam->loop_closure->attempts)));
+                                         mapping::LoopClosureAttemptsCsv(slam->loop_closure->attempts)));
     }
     AddSlamReport(reader, o, *slam, &report);
     // Where along the way the estimate was off, beside what loop closure and odometry

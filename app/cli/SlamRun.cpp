@@ -212,20 +212,4 @@ std::string ScanRecordsCsv(const std::vector<SlamScanRecord>& scans) {
   return csv;
 }
 
-std::string LoopClosureAttemptsCsv(const std::vector<mapping::LoopClosureAttempt>& attempts) {
-  std::string csv =
-      "older_stamp_s,newer_stamp_s,guess_x,guess_y,guess_theta,measured_x,measured_y,"
-      "measured_theta,fitness_rmse_m,inlier_ratio,structure,outcome\n";
-  char line[512];
-  for (const mapping::LoopClosureAttempt& a : attempts) {
-    std::snprintf(line, sizeof(line), "%.6f,%.6f,%.5f,%.5f,%.6f,%.5f,%.5f,%.6f,%.5f,%.4f,%.5f,%s\n",
-                  robotio::NanosToSeconds(a.older_stamp_ns),
-                  robotio::NanosToSeconds(a.newer_stamp_ns), a.guess.x, a.guess.y, a.guess.theta,
-                  a.measured.x, a.measured.y, a.measured.theta, a.fitness_rmse_m, a.inlier_ratio,
-                  a.structure, mapping::LoopClosureOutcomeName(a.outcome));
-    csv += line;
-  }
-  return csv;
-}
-
 }  // namespace dynamap::app

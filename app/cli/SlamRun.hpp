@@ -76,11 +76,6 @@ struct SlamRunResult {
 // The per-scan records as CSV, one header line, SI units and radians.
 [[nodiscard]] std::string ScanRecordsCsv(const std::vector<SlamScanRecord>& scans);
 
-// The revisits loop closure tried, as CSV: stamps of the older and newer keyframe, SLAM's
-// guess and the registration's measurement of the newer in the older's frame, the fit
-// and what became of it.
-[[nodiscard]] std::string LoopClosureAttemptsCsv(
-    const std::vector<mapping::LoopClosureAttempt>& attempts);
 
 // Errors (an unreadable frame) are reported through Expected. `progress` gets the
 // fraction of scans done.

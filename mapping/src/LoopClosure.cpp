@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include "dynamap/mapping/Preprocessing.hpp"
+#include "dynamap/robotio/Time.hpp"
 
 namespace dynamap::mapping {
 namespace {
@@ -47,6 +49,7 @@ LoopClosureConfig ParseLoopClosureConfig(robotio::ConfigNode& node) {
   node.Read("sequence_sigma_rad", &config.sequence_sigma_rad, 1e-7, 1.0);
   node.Read("sequence_sigma_per_sqrt_rad", &config.sequence_sigma_per_sqrt_rad, 0.0, 1.0);
   node.Read("closure_information_scale", &config.closure_information_scale, 0.0, 1e12);
+  node.Read("correct_while_running", &config.correct_while_running);
   if (auto registration = node.OptionalChild("registration")) {
     config.registration = ParseRegistrationConfig(*registration);
   }
@@ -57,6 +60,22 @@ std::size_t LoopClosureSummary::Count(LoopClosureOutcome outcome) const {
   return static_cast<std::size_t>(std::count_if(
       attempts.begin(), attempts.end(),
       [&](const LoopClosureAttempt& attempt) { return attempt.outcome == outcome; }));
+}
+
+std::string LoopClosureAttemptsCsv(const std::vector<LoopClosureAttempt>& attempts) {
+  std::string csv =
+      "older_stamp_s,newer_stamp_s,guess_x,guess_y,guess_theta,measured_x,measured_y,"
+      "measured_theta,fitness_rmse_m,inlier_ratio,structure,outcome\n";
+  char line[512];
+  for (const LoopClosureAttempt& a : attempts) {
+    std::snprintf(line, sizeof(line), "%.6f,%.6f,%.5f,%.5f,%.6f,%.5f,%.5f,%.6f,%.5f,%.4f,%.5f,%s\n",
+                  robotio::NanosToSeconds(a.older_stamp_ns),
+                  robotio::NanosToSeconds(a.newer_stamp_ns), a.guess.x, a.guess.y, a.guess.theta,
+                  a.measured.x, a.measured.y, a.measured.theta, a.fitness_rmse_m, a.inlier_ratio,
+                  a.structure, LoopClosureOutcomeName(a.outcome));
+    csv += line;
+  }
+  return csv;
 }
 
 LoopClosing::LoopClosing(LoopClosureConfig config) : config_(std::move(config)) {}
@@ -72,10 +91,9 @@ bool LoopClosing::Offer(std::int64_t stamp_ns, const robotio::Pose2D& pose,
   const bool due = keyframes_.empty() || driven_since_keyframe_ >= config_.keyframe_distance_m ||
                    turned_since_keyframe_ >= config_.keyframe_angle_rad;
   if (!due || scan.empty()) return false;
-  keyframes_.push_back({stamp_ns, pose, pose, scan});
+  keyframes_.push_back({stamp_ns, pose, pose, pose, scan});
   driven_since_keyframe_ = 0.0;
   turned_since_keyframe_ = 0.0;
-  closed_ = false;
   return true;
 }
 
@@ -83,22 +101,23 @@ robotio::PointList LoopClosing::LocalMap(std::size_t centre) const {
   const auto half = static_cast<std::size_t>(config_.local_map_half_width);
   const std::size_t first = centre > half ? centre - half : 0;
   const std::size_t last = std::min(keyframes_.size() - 1, centre + half);
-  const robotio::Pose2D& origin = keyframes_[centre].pose;
+  const robotio::Pose2D& origin = keyframes_[centre].corrected;
   robotio::PointList points;
   for (std::size_t k = first; k <= last; ++k) {
-    const robotio::PointList placed =
-        TransformedPoints(keyframes_[k].scan, origin.Between(keyframes_[k].pose).ToIsometry());
+    const robotio::PointList placed = TransformedPoints(
+        keyframes_[k].scan, origin.Between(keyframes_[k].corrected).ToIsometry());
     points.insert(points.end(), placed.begin(), placed.end());
   }
   return config_.local_map_voxel_m > 0.0 ? VoxelGridFilter(points, config_.local_map_voxel_m)
                                          : points;
 }
 
-PoseGraphEdge LoopClosing::SequenceEdge(std::size_t from, std::size_t to) const {
+PoseGraphEdge LoopClosing::SequenceEdge(std::size_t to) const {
   PoseGraphEdge edge;
-  edge.from = from;
+  edge.from = to - 1;
   edge.to = to;
-  edge.measured = keyframes_[from].pose.Between(keyframes_[to].pose);
+  // Both in the frame SLAM placed the scans between them in.
+  edge.measured = keyframes_[to - 1].pose_after.Between(keyframes_[to].pose);
   const double sigma_m = config_.sequence_sigma_m +
                          config_.sequence_sigma_per_sqrt_m *
                              std::sqrt(std::hypot(edge.measured.x, edge.measured.y));
@@ -111,80 +130,127 @@ PoseGraphEdge LoopClosing::SequenceEdge(std::size_t from, std::size_t to) const 
   return edge;
 }
 
-LoopClosureSummary LoopClosing::Close() {
-  LoopClosureSummary summary;
-  summary.keyframes = keyframes_.size();
-  closed_ = true;
-  for (Keyframe& k : keyframes_) k.corrected = k.pose;
-  if (keyframes_.size() < 2) return summary;
-
-  std::vector<PoseGraphEdge> edges;
-  for (std::size_t k = 1; k < keyframes_.size(); ++k) edges.push_back(SequenceEdge(k - 1, k));
-  const std::size_t sequence_edges = edges.size();
-  std::vector<std::size_t> closure_attempt;  // Per closure edge, its attempt.
-
-  Registration registration(config_.registration);
-  std::size_t target_of = keyframes_.size();  // Keyframe whose local map is the target.
+std::optional<LoopClosing::Revisit> LoopClosing::TryRevisit(std::size_t newer,
+                                                            Registration* registration,
+                                                            std::size_t* target_of) const {
+  // The nearest keyframe old enough to make a loop.
   const auto gap_ns = static_cast<std::int64_t>(config_.min_time_gap_s * 1e9);
-  for (std::size_t j = 0; j < keyframes_.size(); ++j) {
-    // The nearest keyframe old enough to make a loop.
-    std::size_t best = keyframes_.size();
-    double best_distance = config_.search_radius_m;
-    for (std::size_t i = 0; i < j && keyframes_[j].stamp_ns - keyframes_[i].stamp_ns >= gap_ns;
-         ++i) {
-      const double d = Distance(keyframes_[i].pose, keyframes_[j].pose);
-      if (d <= best_distance) {
-        best_distance = d;
-        best = i;
-      }
+  const Keyframe& j = keyframes_[newer];
+  std::size_t best = keyframes_.size();
+  double best_distance = config_.search_radius_m;
+  for (std::size_t i = 0; i < newer && j.stamp_ns - keyframes_[i].stamp_ns >= gap_ns; ++i) {
+    const double d = Distance(keyframes_[i].corrected, j.corrected);
+    if (d <= best_distance) {
+      best_distance = d;
+      best = i;
     }
-    if (best == keyframes_.size()) continue;
-    if (target_of != best) {
-      registration.SetTarget(LocalMap(best));
-      target_of = best;
-    }
-    const robotio::Pose2D guess = keyframes_[best].pose.Between(keyframes_[j].pose);
-    const RegistrationResult result = registration.Align(keyframes_[j].scan, guess.ToIsometry());
-    LoopClosureAttempt attempt{keyframes_[best].stamp_ns, keyframes_[j].stamp_ns, guess,
-                               robotio::Pose2D::FromIsometry(result.T_target_source),
-                               result.fitness_rmse_m, result.inlier_ratio,
-                               PlanarStructure(result.planar_information),
-                               LoopClosureOutcome::kClosed};
-    const robotio::Pose2D correction = guess.Between(attempt.measured);
-    if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
-        result.fitness_rmse_m > config_.max_fitness_rmse_m) {
-      attempt.outcome = LoopClosureOutcome::kPoorFit;
-    } else if (std::hypot(correction.x, correction.y) > config_.max_correction_m ||
-               std::abs(correction.theta) > config_.max_correction_rad) {
-      attempt.outcome = LoopClosureOutcome::kImplausible;
-    } else {
-      PoseGraphEdge edge;
-      edge.from = best;
-      edge.to = j;
-      edge.measured = attempt.measured;
-      // The registration's information is in the target (older keyframe's) frame with
-      // the yaw about the source origin: the same frame and yaw as the edge's error.
-      edge.information = result.planar_information * config_.closure_information_scale;
-      edge.closure = true;
-      edges.push_back(edge);
-      closure_attempt.push_back(summary.attempts.size());
-    }
-    summary.attempts.push_back(attempt);
   }
-  if (closure_attempt.empty()) return summary;
+  if (best == keyframes_.size()) return std::nullopt;
+  if (*target_of != best) {
+    registration->SetTarget(LocalMap(best));
+    *target_of = best;
+  }
+  const robotio::Pose2D guess = keyframes_[best].corrected.Between(j.corrected);
+  const RegistrationResult result = registration->Align(j.scan, guess.ToIsometry());
+  Revisit revisit{{keyframes_[best].stamp_ns, j.stamp_ns, guess,
+                   robotio::Pose2D::FromIsometry(result.T_target_source), result.fitness_rmse_m,
+                   result.inlier_ratio, PlanarStructure(result.planar_information),
+                   LoopClosureOutcome::kClosed},
+                  std::nullopt};
+  LoopClosureAttempt& attempt = revisit.attempt;
+  const robotio::Pose2D correction = guess.Between(attempt.measured);
+  if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
+      result.fitness_rmse_m > config_.max_fitness_rmse_m) {
+    attempt.outcome = LoopClosureOutcome::kPoorFit;
+  } else if (std::hypot(correction.x, correction.y) > config_.max_correction_m ||
+             std::abs(correction.theta) > config_.max_correction_rad) {
+    attempt.outcome = LoopClosureOutcome::kImplausible;
+  } else {
+    PoseGraphEdge edge;
+    edge.from = best;
+    edge.to = newer;
+    edge.measured = attempt.measured;
+    // The registration's information is in the target (older keyframe's) frame with
+    // the yaw about the source origin: the same frame and yaw as the edge's error.
+    edge.information = result.planar_information * config_.closure_information_scale;
+    edge.closure = true;
+    revisit.edge = edge;
+  }
+  return revisit;
+}
 
+void LoopClosing::Solve(const std::vector<PoseGraphEdge>& closures,
+                        const std::vector<std::size_t>& closure_attempts,
+                        LoopClosureSummary* summary) {
+  std::vector<PoseGraphEdge> edges;
+  for (std::size_t k = 1; k < keyframes_.size(); ++k) edges.push_back(SequenceEdge(k));
+  const std::size_t sequence_edges = edges.size();
+  edges.insert(edges.end(), closures.begin(), closures.end());
   std::vector<robotio::Pose2D> poses;
-  for (const Keyframe& k : keyframes_) poses.push_back(k.pose);
-  summary.graph = OptimizePoseGraph(&poses, edges);
-  for (std::size_t e : summary.graph.dropped) {
-    summary.attempts[closure_attempt[e - sequence_edges]].outcome = LoopClosureOutcome::kDropped;
+  for (const Keyframe& k : keyframes_) poses.push_back(k.corrected);
+  summary->graph = OptimizePoseGraph(&poses, edges);
+  for (std::size_t e : summary->graph.dropped) {
+    summary->attempts[closure_attempts[e - sequence_edges]].outcome = LoopClosureOutcome::kDropped;
   }
   for (std::size_t k = 0; k < keyframes_.size(); ++k) {
     keyframes_[k].corrected = poses[k];
-    summary.largest_correction_m =
-        std::max(summary.largest_correction_m, Distance(poses[k], keyframes_[k].pose));
+    summary->largest_correction_m =
+        std::max(summary->largest_correction_m, Distance(poses[k], keyframes_[k].pose));
   }
+  closed_ = true;
+}
+
+LoopClosureSummary LoopClosing::Close() {
+  LoopClosureSummary summary;
+  summary.keyframes = keyframes_.size();
+  if (keyframes_.size() < 2) return summary;
+  std::vector<PoseGraphEdge> closures;
+  std::vector<std::size_t> closure_attempts;  // Per closure, its attempt.
+  Registration registration(config_.registration);
+  std::size_t target_of = keyframes_.size();  // Keyframe whose local map is the target.
+  for (std::size_t j = 0; j < keyframes_.size(); ++j) {
+    std::optional<Revisit> revisit = TryRevisit(j, &registration, &target_of);
+    if (!revisit) continue;
+    if (revisit->edge) {
+      closures.push_back(*revisit->edge);
+      closure_attempts.push_back(summary.attempts.size());
+    }
+    summary.attempts.push_back(revisit->attempt);
+  }
+  if (!closures.empty()) Solve(closures, closure_attempts, &summary);
   return summary;
+}
+
+std::optional<robotio::Pose2D> LoopClosing::CloseNewest() {
+  online_.keyframes = keyframes_.size();
+  if (keyframes_.empty()) return std::nullopt;
+  const std::size_t newest = keyframes_.size() - 1;
+  Registration registration(config_.registration);
+  std::size_t target_of = keyframes_.size();
+  std::optional<Revisit> revisit = TryRevisit(newest, &registration, &target_of);
+  if (!revisit) return std::nullopt;
+  online_closure_attempts_.push_back(online_.attempts.size());
+  online_.attempts.push_back(revisit->attempt);
+  if (!revisit->edge) {
+    online_closure_attempts_.pop_back();
+    return std::nullopt;
+  }
+  online_closures_.push_back(*revisit->edge);
+  const robotio::Pose2D before = keyframes_[newest].corrected;
+  Solve(online_closures_, online_closure_attempts_, &online_);
+  // A closure the graph dropped stays out of later solves.
+  for (std::size_t c = online_closures_.size(); c-- > 0;) {
+    if (online_.attempts[online_closure_attempts_[c]].outcome == LoopClosureOutcome::kDropped) {
+      online_closures_.erase(online_closures_.begin() + static_cast<std::ptrdiff_t>(c));
+      online_closure_attempts_.erase(online_closure_attempts_.begin() +
+                                     static_cast<std::ptrdiff_t>(c));
+    }
+  }
+  Keyframe& k = keyframes_[newest];
+  const robotio::Pose2D correction = k.corrected.Compose(before.Inverse());
+  k.pose_after = correction.Compose(k.pose_after);
+  last_pose_ = correction.Compose(last_pose_);
+  return correction;
 }
 
 robotio::Pose2D LoopClosing::Correct(std::int64_t stamp_ns, const robotio::Pose2D& pose) const {
@@ -192,13 +258,16 @@ robotio::Pose2D LoopClosing::Correct(std::int64_t stamp_ns, const robotio::Pose2
   const auto after = std::lower_bound(
       keyframes_.begin(), keyframes_.end(), stamp_ns,
       [](const Keyframe& k, std::int64_t stamp) { return k.stamp_ns < stamp; });
-  auto moved = [&](const Keyframe& k) { return k.corrected.Compose(k.pose.Between(pose)); };
-  if (after == keyframes_.begin()) return moved(*after);
-  if (after == keyframes_.end()) return moved(keyframes_.back());
+  // A scan is in the frame of the keyframe before it as it stood after that keyframe
+  // (pose_after) and of the one after it as offered (pose).
+  auto from_before = [&](const Keyframe& k) { return k.corrected.Compose(k.pose_after.Between(pose)); };
+  auto from_after = [&](const Keyframe& k) { return k.corrected.Compose(k.pose.Between(pose)); };
+  if (after == keyframes_.begin()) return from_after(*after);
+  if (after == keyframes_.end()) return from_before(keyframes_.back());
   const Keyframe& before = *std::prev(after);
   const double span = static_cast<double>(after->stamp_ns - before.stamp_ns);
   const double s = span > 0.0 ? static_cast<double>(stamp_ns - before.stamp_ns) / span : 0.0;
-  return robotio::Interpolate(moved(before), moved(*after), s);
+  return robotio::Interpolate(from_before(before), from_after(*after), s);
 }
 
 }  // namespace dynamap::mapping

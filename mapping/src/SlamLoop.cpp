@@ -345,6 +345,13 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
   return step;
 }
 
+void SlamLoop::ApplyCorrection(const robotio::Pose2D& correction) {
+  pose_ = correction.Compose(pose_);
+  if (map_prediction_) map_prediction_ = correction.Compose(*map_prediction_);
+  previous_scan_map_ = Transformed(previous_scan_map_, correction);
+  reference_centre_.reset();
+}
+
 std::vector<std::vector<std::size_t>> GroupIntoScans(
     const std::vector<std::int64_t>& capture_stamps_ns, const std::vector<int>& sensor_ids,
     std::int64_t max_span_ns) {

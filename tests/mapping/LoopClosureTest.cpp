@@ -150,6 +150,59 @@ TEST(LoopClosure, ARevisitBendsADriftedLapBackOntoTheTruth) {
               worst_after, heading_before, heading_after);
 }
 
+TEST(LoopClosure, ClosedAsTheRobotGoesTheLapEndsOnTheTruth) {
+  const robotio::PointList room = Room();
+  const std::vector<Pose2D> truth = LapOfTheRoom();
+  std::mt19937 noise(7);
+  LoopClosing closing(LoopClosureConfig{});
+  // SLAM online: each step turned 0.0006 rad too far (as Drifted), from wherever the
+  // last closure put the pose.
+  Pose2D slam = truth.front();
+  std::vector<Pose2D> online;  // The pose each scan was placed at.
+  std::size_t corrections = 0;
+  for (std::size_t k = 0; k < truth.size(); ++k) {
+    if (k > 0) {
+      Pose2D step = truth[k - 1].Between(truth[k]);
+      step.theta += 0.0006;
+      slam = slam.Compose(step);
+    }
+    online.push_back(slam);
+    if (!closing.Offer(Stamp(k), slam, Scan(room, truth[k], &noise))) continue;
+    if (const auto correction = closing.CloseNewest()) {
+      slam = correction->Compose(slam);
+      ++corrections;
+    }
+  }
+  const std::vector<Pose2D> drifted = Drifted(truth);
+  const double end_drifted = Distance(drifted.back(), truth.back());
+  ASSERT_GT(end_drifted, 0.08);
+  const LoopClosureSummary& summary = closing.online();
+  EXPECT_GE(corrections, 3u);
+  EXPECT_EQ(summary.keyframes, closing.keyframes());
+  EXPECT_EQ(summary.Count(LoopClosureOutcome::kClosed) + summary.Count(LoopClosureOutcome::kDropped),
+            corrections);
+  for (const LoopClosureAttempt& attempt : summary.attempts) {
+    EXPECT_GE(attempt.newer_stamp_ns - attempt.older_stamp_ns, Stamp(20));
+  }
+  // Where the robot ends up believing it is: on the truth, not where drift took it.
+  EXPECT_LT(Distance(slam, truth.back()), 0.3 * end_drifted) << "drifted " << end_drifted;
+  EXPECT_LT(std::abs(robotio::WrapAngle(slam.theta - truth.back().theta)),
+            0.3 * std::abs(robotio::WrapAngle(drifted.back().theta - truth.back().theta)));
+  // The whole path afterwards, each scan moved by the keyframes around it, across the
+  // jumps the closures made.
+  double worst_online = 0.0;
+  double worst_corrected = 0.0;
+  for (std::size_t k = 0; k < truth.size(); ++k) {
+    worst_online = std::max(worst_online, Distance(online[k], truth[k]));
+    worst_corrected =
+        std::max(worst_corrected, Distance(closing.Correct(Stamp(k), online[k]), truth[k]));
+  }
+  EXPECT_LT(worst_corrected, 0.5 * worst_online) << "online " << worst_online;
+  std::printf("%zu closures; end %.3f m (drifted %.3f m); worst %.3f m online, %.3f m corrected\n",
+              corrections, Distance(slam, truth.back()), end_drifted, worst_online,
+              worst_corrected);
+}
+
 TEST(LoopClosure, WithoutARevisitNothingMoves) {
   const robotio::PointList room = Room();
   std::vector<Pose2D> truth = LapOfTheRoom();
@@ -178,10 +231,13 @@ TEST(LoopClosure, ReadsItsSettingsAndRejectsUnknownKeys) {
         text, "loop.yaml", [](robotio::ConfigNode& node) { return ParseLoopClosureConfig(node); });
   };
   const auto config =
-      parse("enabled: false\nkeyframe_distance_m: 0.8\nregistration: {max_iterations: 12}\n");
+      parse("enabled: false\nkeyframe_distance_m: 0.8\ncorrect_while_running: true\n"
+            "registration: {max_iterations: 12}\n");
   ASSERT_TRUE(config.ok()) << config.error().message;
   EXPECT_FALSE(config->enabled);
   EXPECT_DOUBLE_EQ(config->keyframe_distance_m, 0.8);
+  EXPECT_TRUE(config->correct_while_running);
+  EXPECT_FALSE(LoopClosureConfig{}.correct_while_running);  // Closed at the end by default.
   EXPECT_EQ(config->registration.max_iterations, 12);
   EXPECT_DOUBLE_EQ(config->search_radius_m, LoopClosureConfig{}.search_radius_m);
   const auto refused = parse("keyframe_distance: 0.8\n");

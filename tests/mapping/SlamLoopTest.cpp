@@ -297,6 +297,29 @@ void FeedScans(const OfficeDrive& drive, std::size_t count, SlamLoop* slam) {
   }
 }
 
+// A loop closure moves SLAM's pose (ApplyCorrection): the next scan is predicted from the
+// moved pose, by the odometry since the last scan, against a map target rebuilt there.
+TEST(SlamLoop, ACorrectionMovesThePoseTheNextScanIsPredictedFrom) {
+  const OfficeDrive drive = DriveThroughTheOffice(false);
+  SlamLoop slam(SlamConfig{}, CoarseMapping(), drive.rig);
+  FeedScans(drive, 60, &slam);
+  const robotio::Pose2D before = slam.pose();
+  const robotio::Pose2D correction{0.08, -0.05, 0.01};
+  slam.ApplyCorrection(correction);
+  const robotio::Pose2D moved = correction.Compose(before);
+  EXPECT_NEAR(slam.pose().x, moved.x, 1e-12);
+  EXPECT_NEAR(slam.pose().y, moved.y, 1e-12);
+  EXPECT_NEAR(slam.pose().theta, moved.theta, 1e-12);
+  const robotio::Pose2D odometry_before =
+      PoseAt(drive.dead_reckoning, drive.frames[drive.scans[59].front()].stamp_ns);
+  const ScanOutcome next = ProcessDriveScan(drive, 60, &slam);
+  const robotio::Pose2D expected = moved.Compose(odometry_before.Between(next.odometry));
+  EXPECT_NEAR(next.step.predicted.x, expected.x, 1e-9);
+  EXPECT_NEAR(next.step.predicted.y, expected.y, 1e-9);
+  EXPECT_NEAR(next.step.predicted.theta, expected.theta, 1e-9);
+  EXPECT_TRUE(next.step.reference_rebuilt);
+}
+
 // Voxels of `points` in `slam`'s map whose static probability is below `probability`.
 std::size_t CountBelow(const SlamLoop& slam, const robotio::PointList& points, double probability) {
   std::size_t below = 0;

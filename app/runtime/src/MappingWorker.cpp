@@ -36,7 +36,10 @@ MappingWorker::MappingWorker(Mediator& mediator, robotio::Rig rig, MappingWorker
       accuracy_(config_.mapping.resolution_m, config_.mapping.max_range_m,
                 config_.evaluation_stride),
       scans_(static_cast<int>(rig_.kinects.size()), ScanSpan(rig_)) {
-  if (config_.poses == PoseSource::kSlam) slam_.emplace(config_.slam, config_.mapping, rig_);
+  if (config_.poses == PoseSource::kSlam) {
+    slam_.emplace(config_.slam, config_.mapping, rig_);
+    if (config_.slam.loop_closure.enabled) loop_closing_.emplace(config_.slam.loop_closure);
+  }
 }
 
 MappingWorker::~MappingWorker() = default;
@@ -114,6 +117,16 @@ void MappingWorker::Process(const std::vector<CapturedFrame>& batch) {
     for (std::size_t i = 0; i < frames.size(); ++i) {
       placed[i] = step.pose.Compose(odometry[0].Between(odometry[i]));
     }
+    // A closure moves the pose from the next scan on: this one is in the map where
+    // `step.pose` put it.
+    if (loop_closing_ && loop_closing_->Offer(frames[0]->depth.stamp_ns, step.pose,
+                                              slam_->last_registered_scan()) &&
+        config_.slam.loop_closure.correct_while_running) {
+      if (const auto correction = loop_closing_->CloseNewest()) {
+        slam_->ApplyCorrection(*correction);
+        ++mediator_.counters.loop_closures;
+      }
+    }
   } else {
     std::vector<const robotio::DepthFrame*> depths;
     std::vector<robotio::KinectMount> mounts;
@@ -178,6 +191,27 @@ void MappingWorker::Run() {
     }
     mediator_.counters.slam_done_ns = newest_received;
   }
+}
+
+void MappingWorker::CloseLoops() {
+  if (!loop_closing_ || loops_closed_) return;
+  loops_closed_ = true;
+  if (config_.slam.loop_closure.correct_while_running) {
+    loop_closure_ = loop_closing_->online();
+    return;
+  }
+  loop_closure_ = loop_closing_->Close();
+  mediator_.counters.loop_closures =
+      static_cast<std::int64_t>(loop_closure_.Count(mapping::LoopClosureOutcome::kClosed));
+}
+
+robotio::Trajectory MappingWorker::Corrected(const robotio::Trajectory& estimates) const {
+  if (!loop_closing_) return estimates;
+  robotio::Trajectory corrected = estimates;
+  for (robotio::StampedPose& p : corrected) {
+    p.pose = loop_closing_->Correct(p.stamp_ns, robotio::Pose2D::FromIsometry(p.pose)).ToIsometry();
+  }
+  return corrected;
 }
 
 mapping::PointAccuracy MappingWorker::Accuracy() const { return accuracy_.Evaluate(map().tree()); }

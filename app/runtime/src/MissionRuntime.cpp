@@ -25,6 +25,7 @@
 #include "dynamap/mapping/MapExport.hpp"
 #include "dynamap/mapping/MapFiles.hpp"
 #include "dynamap/mapping/TrajectoryEvaluation.hpp"
+#include "dynamap/robotio/AtomicFile.hpp"
 #include "dynamap/robotio/FloorBlindZone.hpp"
 #include "dynamap/robotio/RecordingWriter.hpp"
 #include "dynamap/robotio/Time.hpp"
@@ -383,6 +384,7 @@ MissionSnapshot MissionRuntime::Snapshot() const {
   s.frames_dropped = m.frames.dropped();
   s.frames_processed = m.counters.frames_processed.load();
   s.collisions = m.counters.collisions.load();
+  s.loop_closures = m.counters.loop_closures.load();
   s.guard_stops = m.counters.guard_stops.load();
   if (auto command = m.command.Get()) s.command = command->value;
   s.exploration_done = m.counters.exploration_done.load();
@@ -420,18 +422,22 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   r.insert_median_ms = mapping_->median_insert_ms();
   r.insert_p95_ms = mapping_->p95_insert_ms();
 
+  mapping_->CloseLoops();
+  r.loop_closures = m.counters.loop_closures.load();
   const robotio::Trajectory truth = m.GroundTruth();
-  const robotio::Trajectory estimate = m.Estimates();
+  const robotio::Trajectory online = m.Estimates();
+  const robotio::Trajectory estimate = mapping_->Corrected(online);
   // On the robot nothing is known to score against: those figures stay empty (null).
   constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
   const robotio::Trajectory& driven = world_ ? truth : estimate;
   for (std::size_t i = 1; i < driven.size(); ++i) {
     r.path_length_m += (driven[i].pose.translation() - driven[i - 1].pose.translation()).norm();
   }
-  r.ate_rmse_m = r.odometry_ate_rmse_m = kUnknown;
+  r.ate_rmse_m = r.online_ate_rmse_m = r.odometry_ate_rmse_m = kUnknown;
   mapping::TrajectoryEvaluationConfig ate;
   ate.max_stamp_difference_s = 0.011;  // Ground truth comes at the gyro's 100 Hz.
   if (auto e = mapping::EvaluateTrajectory(truth, estimate, ate)) r.ate_rmse_m = e->ate_m.rmse;
+  if (auto e = mapping::EvaluateTrajectory(truth, online, ate)) r.online_ate_rmse_m = e->ate_m.rmse;
   if (auto e = mapping::EvaluateTrajectory(truth, m.OdometryEstimates(), ate)) {
     r.odometry_ate_rmse_m = e->ate_m.rmse;
   }
@@ -476,6 +482,16 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
           ? robotio::Status(robotio::Ok{})
           : write("map3d_topdown.png", mapping::WriteTopDownPng(tree, out + "/map3d_topdown.png")),
       write("trajectory.tum", robotio::WriteTumTrajectory(estimate, out + "/trajectory.tum")),
+      mapping_->loop_closure() == nullptr
+          ? robotio::Status(robotio::Ok{})
+          : write("trajectory_online.tum",
+                  robotio::WriteTumTrajectory(online, out + "/trajectory_online.tum")),
+      mapping_->loop_closure() == nullptr
+          ? robotio::Status(robotio::Ok{})
+          : write("loop_closures.csv",
+                  robotio::WriteFileAtomically(
+                      out + "/loop_closures.csv",
+                      mapping::LoopClosureAttemptsCsv(mapping_->loop_closure()->attempts))),
       world_ ? write("groundtruth.tum", robotio::WriteTumTrajectory(truth, out + "/groundtruth.tum"))
              : robotio::Status(robotio::Ok{}),
       write("map2d.png", WriteMapPicture(mapping_->grid(), ToPoses(estimate), ToPoses(truth),
@@ -498,6 +514,17 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
                           {"kinect_width", config_.kinect_width},
                           {"kinect_height", config_.kinect_height},
                           {"targets", config_.planning.targets.strategy}};
+  if (const mapping::LoopClosureSummary* closure = mapping_->loop_closure()) {
+    using Outcome = mapping::LoopClosureOutcome;
+    extra["loop_closure"] = {{"keyframes", closure->keyframes},
+                             {"candidates", closure->attempts.size()},
+                             {"poor_fits", closure->Count(Outcome::kPoorFit)},
+                             {"implausible", closure->Count(Outcome::kImplausible)},
+                             {"closures", closure->Count(Outcome::kClosed) +
+                                              closure->Count(Outcome::kDropped)},
+                             {"closures_dropped", closure->Count(Outcome::kDropped)},
+                             {"largest_correction_m", closure->largest_correction_m}};
+  }
   if (world_) {
     extra["world"] = config_.world_file;
     extra["seed"] = config_.seed;

@@ -1,12 +1,15 @@
-// Loop closure over a finished SLAM pass: keyframes (scans every half metre or so, with
-// the poses SLAM gave them), each registered against the local map of an older keyframe
-// near it, and a planar pose graph (PoseGraph.hpp) that bends the trajectory so that
-// places seen twice agree. SLAM's scan-to-map loop cannot correct a map once written
-// (thesis Algorithm 4 has no such step); this is where revisits do.
+// Loop closure: keyframes (scans every half metre or so, with the poses SLAM gave them),
+// each registered against the local map of an older keyframe near it, and a planar pose
+// graph (PoseGraph.hpp) that bends the trajectory so that places seen twice agree. SLAM's
+// scan-to-map loop cannot correct a map once written (thesis Algorithm 4 has no such
+// step); this is where revisits do. Over a finished pass (Close(), dynamap map) or as the
+// robot goes (CloseNewest(), a mission), moving SLAM's pose at each closure.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "dynamap/mapping/PoseGraph.hpp"
@@ -48,6 +51,12 @@ struct LoopClosureConfig {
   // independent pairs / (point-to-plane noise)².
   double closure_information_scale = 25.0 / (0.01 * 0.01);
   RegistrationConfig registration;  // ICP for the closures.
+  // In a mission: each closure moves SLAM's pose as soon as it is found (CloseNewest)
+  // instead of all of them correcting the trajectory once at the end (Close). Off: on the
+  // office (seed 1) the closures taken as they came took the mission's ATE from 0.15 to
+  // 0.92 m; a wrong one is applied before any later one can contradict it, and the map
+  // goes on from the wrong pose (docs/RESULTS.md).
+  bool correct_while_running = false;
 };
 
 // Reads a "loop_closure:" mapping; unknown keys are errors.
@@ -84,6 +93,11 @@ struct LoopClosureSummary {
   [[nodiscard]] std::size_t Count(LoopClosureOutcome outcome) const;
 };
 
+// The revisits tried, as CSV (loop_closures.csv): stamps of the older and newer keyframe,
+// SLAM's guess and the registration's measurement of the newer in the older's frame, the
+// fit and what became of it.
+[[nodiscard]] std::string LoopClosureAttemptsCsv(const std::vector<LoopClosureAttempt>& attempts);
+
 class LoopClosing {
  public:
   explicit LoopClosing(LoopClosureConfig config);
@@ -96,29 +110,57 @@ class LoopClosing {
   // Finds the closures, optimises the graph and keeps the corrected keyframe poses.
   LoopClosureSummary Close();
 
+  // Online, right after Offer() kept a keyframe: tries the revisit of that keyframe and,
+  // when it closes, solves the graph over every keyframe and the closures kept so far.
+  // Returns how the newest keyframe moved (T_map_base ← correction ∘ T_map_base; none
+  // when nothing closed). The caller must move its pose by it (SlamLoop::ApplyCorrection):
+  // the poses offered from then on are taken to be in the corrected frame.
+  std::optional<robotio::Pose2D> CloseNewest();
+  // What CloseNewest() tried so far, the last solve and the largest correction it made.
+  [[nodiscard]] const LoopClosureSummary& online() const { return online_; }
+
   // `pose` of a scan at `stamp_ns` moved by the correction of the keyframes around it
-  // (interpolated in time between the one before and the one after). Before Close(), or
-  // without keyframes, `pose` unchanged.
+  // (interpolated in time between the one before and the one after). Before any closure,
+  // or without keyframes, `pose` unchanged.
   [[nodiscard]] robotio::Pose2D Correct(std::int64_t stamp_ns, const robotio::Pose2D& pose) const;
   [[nodiscard]] std::size_t keyframes() const { return keyframes_.size(); }
 
  private:
   struct Keyframe {
     std::int64_t stamp_ns = 0;
-    robotio::Pose2D pose;       // SLAM's.
-    robotio::Pose2D corrected;  // After Close().
-    robotio::PointList scan;    // Base frame.
+    robotio::Pose2D pose;        // SLAM's, as offered.
+    robotio::Pose2D pose_after;  // The same in the frame of the scans after it (moved by
+                                 // the correction CloseNewest() made at it, if any).
+    robotio::Pose2D corrected;   // Best estimate: `pose` until a solve moves it.
+    robotio::PointList scan;     // Base frame.
   };
   // The older keyframe `centre`'s local map in its own frame.
   [[nodiscard]] robotio::PointList LocalMap(std::size_t centre) const;
-  [[nodiscard]] PoseGraphEdge SequenceEdge(std::size_t from, std::size_t to) const;
+  [[nodiscard]] PoseGraphEdge SequenceEdge(std::size_t to) const;  // From the one before.
+  // Keyframe `newer` against the nearest estimate old enough to make a loop: the attempt
+  // (none when there is no such keyframe) and, when it is plausible, its graph edge.
+  // `target_of` names the keyframe whose local map `registration` holds.
+  struct Revisit {
+    LoopClosureAttempt attempt;
+    std::optional<PoseGraphEdge> edge;
+  };
+  std::optional<Revisit> TryRevisit(std::size_t newer, Registration* registration,
+                                    std::size_t* target_of) const;
+  // Solves the sequence edges with `closures`, from the current estimates; marks the
+  // attempts of dropped closures (indices into `summary->attempts`) and keeps the result.
+  void Solve(const std::vector<PoseGraphEdge>& closures,
+             const std::vector<std::size_t>& closure_attempts, LoopClosureSummary* summary);
 
   LoopClosureConfig config_;
   std::vector<Keyframe> keyframes_;
   double driven_since_keyframe_ = 0.0;
   double turned_since_keyframe_ = 0.0;
   robotio::Pose2D last_pose_;
-  bool closed_ = false;
+  bool closed_ = false;  // A solve has moved the estimates.
+  // Online: the closures kept so far and their attempts' indices in online_.attempts.
+  LoopClosureSummary online_;
+  std::vector<PoseGraphEdge> online_closures_;
+  std::vector<std::size_t> online_closure_attempts_;
 };
 
 }  // namespace dynamap::mapping

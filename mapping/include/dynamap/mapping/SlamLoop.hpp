@@ -105,7 +105,8 @@ struct SlamConfig {
   double registration_sigma_rad = 0.002;      // rad, its heading noise.
   // After a pass over a recording, keyframes registered against older ones nearby close
   // the loops the pass made, and the map is built again from the corrected poses
-  // (LoopClosure.hpp; dynamap map). Not used by SlamLoop itself.
+  // (LoopClosure.hpp; dynamap map); in a mission they close as the robot goes and move
+  // its pose (MappingWorker). Not used by SlamLoop itself.
   LoopClosureConfig loop_closure;
   std::size_t min_scan_points = 200;       // Fewer preprocessed points: no registration.
   std::size_t min_reference_points = 500;  // Fewer map voxels: the map is not yet usable.
@@ -144,6 +145,10 @@ class SlamLoop {
                        const std::vector<robotio::Pose2D>& odometry_at_frames);
 
   [[nodiscard]] const robotio::Pose2D& pose() const { return pose_; }
+  // A loop closure moved the pose: T_map_base ← correction ∘ T_map_base, and with it the
+  // previous scan and the odometry prediction the next registration is checked against.
+  // The map stays as written; the map target is rebuilt at the next scan.
+  void ApplyCorrection(const robotio::Pose2D& correction);
   [[nodiscard]] const DualMap& map() const { return map_; }
   [[nodiscard]] const SlamConfig& config() const { return config_; }
   // The last scan's points as registered (preprocessed, thinned, base frame at its time).

@@ -2,7 +2,10 @@
 // frames, localises them, inserts them into the dual map, re-projects the 2D grid where
 // the frames looked, and publishes pose and grid through the mediator. It also gathers
 // what the mission report scores: labelled points (static/dynamic accuracy) and the
-// surfaces seen from within the inspection distance.
+// surfaces seen from within the inspection distance. With SLAM poses and loop closure on
+// (slam.loop_closure), keyframes are kept as the robot goes; CloseLoops() at the end
+// registers each against older ones nearby and corrects the trajectory (or, with
+// correct_while_running, each closure moves the pose as soon as it is found).
 #pragma once
 
 #include <cstdint>
@@ -15,6 +18,7 @@
 #include "dynamap/app/runtime/MissionConfig.hpp"
 #include "dynamap/app/runtime/ScanAssembler.hpp"
 #include "dynamap/mapping/DualMap.hpp"
+#include "dynamap/mapping/LoopClosure.hpp"
 #include "dynamap/mapping/MapEvaluation.hpp"
 #include "dynamap/mapping/SlamLoop.hpp"
 #include "dynamap/planning/MapProjection.hpp"
@@ -47,6 +51,16 @@ class MappingWorker {
   [[nodiscard]] mapping::PointAccuracy Accuracy() const;
   [[nodiscard]] bool Inspected(const Eigen::Vector3f& p_map) const;  // Within one voxel.
   [[nodiscard]] const planning::GridMap& grid() const { return projector_.map(); }
+  // After Run() returned: the closures not yet made (all of them, unless they were made
+  // as the robot went) and the pose graph solved over the whole mission.
+  void CloseLoops();
+  // The estimates moved by every loop closure made (each by the keyframes around it), the
+  // best trajectory the mission knows at its end; `estimates` unchanged without closures.
+  [[nodiscard]] robotio::Trajectory Corrected(const robotio::Trajectory& estimates) const;
+  // What loop closure did; none when it is off or poses do not come from SLAM.
+  [[nodiscard]] const mapping::LoopClosureSummary* loop_closure() const {
+    return loop_closing_ ? &loop_closure_ : nullptr;
+  }
   [[nodiscard]] double median_insert_ms() const;
   [[nodiscard]] double p95_insert_ms() const;
 
@@ -65,6 +79,9 @@ class MappingWorker {
   MappingWorkerConfig config_;
   mapping::DualMap map_;                  // Used when poses come from odometry / truth.
   std::optional<mapping::SlamLoop> slam_;  // Owns the map when poses come from SLAM.
+  std::optional<mapping::LoopClosing> loop_closing_;  // With SLAM, when enabled.
+  mapping::LoopClosureSummary loop_closure_;  // Once CloseLoops() ran.
+  bool loops_closed_ = false;
   planning::MapProjector projector_;
   mapping::PointAccuracyCounter accuracy_;
   std::unordered_set<std::uint64_t> inspected_voxels_;

@@ -36,6 +36,7 @@ struct MissionSnapshot {
   std::int64_t frames_processed = 0;
   std::int64_t collisions = 0;
   std::int64_t guard_stops = 0;
+  std::int64_t loop_closures = 0;           // Closures that moved the SLAM pose.
   robotio::VelocityCommand command;         // Last velocity command sent.
   bool exploration_done = false;
   double time_limit_s = 0.0;                // Mission time at which it ends (a replay: its length).
@@ -52,7 +53,8 @@ struct MissionReport {
   double path_length_m = 0.0;           // True path driven.
   double mission_time_s = 0.0;
   std::int64_t collisions = 0;
-  double ate_rmse_m = 0.0;
+  double ate_rmse_m = 0.0;         // trajectory.tum: with every loop closure applied.
+  double online_ate_rmse_m = 0.0;  // The poses as the mission had them (trajectory_online.tum).
   double odometry_ate_rmse_m = 0.0;
   double static_accuracy = 0.0;
   double dynamic_accuracy = 0.0;
@@ -64,6 +66,7 @@ struct MissionReport {
   std::int64_t frames_processed = 0;
   std::int64_t registrations_accepted = 0;
   std::int64_t registrations_rejected = 0;
+  std::int64_t loop_closures = 0;  // Closures that moved the pose during the mission.
   std::int64_t guard_stops = 0;
   std::int64_t map_guard_stops = 0;  // Control steps the map guard held the base.
   std::int64_t stall_stops = 0;      // Times the base stalled against something unseen.
