@@ -229,13 +229,10 @@ std::optional<robotio::Pose2D> LoopClosing::CloseNewest() {
   std::size_t target_of = keyframes_.size();
   std::optional<Revisit> revisit = TryRevisit(newest, &registration, &target_of);
   if (!revisit) return std::nullopt;
-  online_closure_attempts_.push_back(online_.attempts.size());
   online_.attempts.push_back(revisit->attempt);
-  if (!revisit->edge) {
-    online_closure_attempts_.pop_back();
-    return std::nullopt;
-  }
+  if (!revisit->edge) return std::nullopt;
   online_closures_.push_back(*revisit->edge);
+  online_closure_attempts_.push_back(online_.attempts.size() - 1);
   const robotio::Pose2D before = keyframes_[newest].corrected;
   Solve(online_closures_, online_closure_attempts_, &online_);
   // A closure the graph dropped stays out of later solves.

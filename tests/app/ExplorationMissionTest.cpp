@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <thread>
 
 #include "../robotio/TestPaths.hpp"
@@ -112,7 +113,14 @@ TEST(ExplorationMission, SlamRegistersBothKinectsOfAnInstantAsOneScan) {
   // enough to close within 30 s): the poses as the mission had them and the revisits
   // tried lie beside the trajectory.
   EXPECT_TRUE(fs::exists(out + "/trajectory_online.tum"));
-  EXPECT_TRUE(fs::exists(out + "/loop_closures.csv"));
+  std::ifstream csv(out + "/loop_closures.csv");
+  ASSERT_TRUE(csv.good());
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  EXPECT_EQ(line.rfind("older_stamp_s,newer_stamp_s,", 0), 0u) << line;
+  std::int64_t closed = 0;
+  while (std::getline(csv, line)) closed += line.size() > 7 && line.substr(line.size() - 7) == ",closed";
+  EXPECT_EQ(report->loop_closures, closed);  // The report counts what the file lists.
   if (report->loop_closures == 0) {
     EXPECT_DOUBLE_EQ(report->ate_rmse_m, report->online_ate_rmse_m);
   }

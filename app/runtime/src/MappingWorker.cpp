@@ -201,8 +201,6 @@ void MappingWorker::CloseLoops() {
     return;
   }
   loop_closure_ = loop_closing_->Close();
-  mediator_.counters.loop_closures =
-      static_cast<std::int64_t>(loop_closure_.Count(mapping::LoopClosureOutcome::kClosed));
 }
 
 robotio::Trajectory MappingWorker::Corrected(const robotio::Trajectory& estimates) const {

@@ -423,7 +423,10 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   r.insert_p95_ms = mapping_->p95_insert_ms();
 
   mapping_->CloseLoops();
-  r.loop_closures = m.counters.loop_closures.load();
+  if (const mapping::LoopClosureSummary* closure = mapping_->loop_closure()) {
+    r.loop_closures =
+        static_cast<std::int64_t>(closure->Count(mapping::LoopClosureOutcome::kClosed));
+  }
   const robotio::Trajectory truth = m.GroundTruth();
   const robotio::Trajectory online = m.Estimates();
   const robotio::Trajectory estimate = mapping_->Corrected(online);

@@ -105,8 +105,9 @@ struct SlamConfig {
   double registration_sigma_rad = 0.002;      // rad, its heading noise.
   // After a pass over a recording, keyframes registered against older ones nearby close
   // the loops the pass made, and the map is built again from the corrected poses
-  // (LoopClosure.hpp; dynamap map); in a mission they close as the robot goes and move
-  // its pose (MappingWorker). Not used by SlamLoop itself.
+  // (LoopClosure.hpp; dynamap map); a mission closes them when it ends and corrects its
+  // trajectory (MappingWorker; or moves the pose at each one, correct_while_running).
+  // Not used by SlamLoop itself.
   LoopClosureConfig loop_closure;
   std::size_t min_scan_points = 200;       // Fewer preprocessed points: no registration.
   std::size_t min_reference_points = 500;  // Fewer map voxels: the map is not yet usable.

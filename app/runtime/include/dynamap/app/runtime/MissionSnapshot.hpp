@@ -66,7 +66,7 @@ struct MissionReport {
   std::int64_t frames_processed = 0;
   std::int64_t registrations_accepted = 0;
   std::int64_t registrations_rejected = 0;
-  std::int64_t loop_closures = 0;  // Closures that moved the pose during the mission.
+  std::int64_t loop_closures = 0;  // Revisits closed and kept in the pose graph.
   std::int64_t guard_stops = 0;
   std::int64_t map_guard_stops = 0;  // Control steps the map guard held the base.
   std::int64_t stall_stops = 0;      // Times the base stalled against something unseen.
