@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <memory>
 #include <utility>
 
 #include "dynamap/mapping/Preprocessing.hpp"
@@ -38,6 +40,8 @@ LoopClosureConfig ParseLoopClosureConfig(robotio::ConfigNode& node) {
   node.Read("keyframe_angle_rad", &config.keyframe_angle_rad, 0.01, 3.2);
   node.Read("min_time_gap_s", &config.min_time_gap_s, 0.0, 1e6);
   node.Read("search_radius_m", &config.search_radius_m, 0.0, 20.0);
+  node.Read("revisit_candidates", &config.revisit_candidates, 1, 100);
+  node.Read("heading_weight_m_per_rad", &config.heading_weight_m_per_rad, 0.0, 100.0);
   node.Read("local_map_half_width", &config.local_map_half_width, 0, 100);
   node.Read("local_map_voxel_m", &config.local_map_voxel_m, 0.0, 1.0);
   node.Read("min_inlier_ratio", &config.min_inlier_ratio, 0.0, 1.0);
@@ -130,53 +134,85 @@ PoseGraphEdge LoopClosing::SequenceEdge(std::size_t to) const {
   return edge;
 }
 
-std::optional<LoopClosing::Revisit> LoopClosing::TryRevisit(std::size_t newer,
-                                                            Registration* registration,
-                                                            std::size_t* target_of) const {
-  // The nearest keyframe old enough to make a loop.
+// The registrations of the local maps used lately (Close() walks the keyframes in
+// order, so consecutive revisits mostly look at the same older places).
+class LoopClosing::TargetCache {
+ public:
+  explicit TargetCache(const LoopClosing& closing) : closing_(closing) {}
+  const Registration& For(std::size_t centre) {
+    auto found = built_.find(centre);
+    if (found != built_.end()) return *found->second;
+    if (built_.size() >= kCapacity) built_.erase(built_.begin());  // Oldest keyframe.
+    auto registration = std::make_unique<Registration>(closing_.config_.registration);
+    registration->SetTarget(closing_.LocalMap(centre));
+    return *built_.emplace(centre, std::move(registration)).first->second;
+  }
+
+ private:
+  static constexpr std::size_t kCapacity = 32;
+  const LoopClosing& closing_;
+  std::map<std::size_t, std::unique_ptr<Registration>> built_;
+};
+
+std::vector<std::size_t> LoopClosing::RevisitCandidates(std::size_t newer) const {
   const auto gap_ns = static_cast<std::int64_t>(config_.min_time_gap_s * 1e9);
   const Keyframe& j = keyframes_[newer];
-  std::size_t best = keyframes_.size();
-  double best_distance = config_.search_radius_m;
+  std::vector<std::pair<double, std::size_t>> near;  // (score, keyframe)
   for (std::size_t i = 0; i < newer && j.stamp_ns - keyframes_[i].stamp_ns >= gap_ns; ++i) {
     const double d = Distance(keyframes_[i].corrected, j.corrected);
-    if (d <= best_distance) {
-      best_distance = d;
-      best = i;
+    if (d > config_.search_radius_m) continue;
+    const double turn = std::abs(robotio::WrapAngle(j.corrected.theta - keyframes_[i].corrected.theta));
+    near.emplace_back(d + config_.heading_weight_m_per_rad * turn, i);
+  }
+  std::sort(near.begin(), near.end());
+  // Each from another stretch of the path: local maps that share no keyframe.
+  const auto apart = static_cast<std::size_t>(2 * config_.local_map_half_width);
+  std::vector<std::size_t> chosen;
+  for (const auto& [score, i] : near) {
+    if (chosen.size() >= static_cast<std::size_t>(config_.revisit_candidates)) break;
+    const bool distinct = std::all_of(chosen.begin(), chosen.end(), [&](std::size_t c) {
+      return (i > c ? i - c : c - i) > apart;
+    });
+    if (distinct) chosen.push_back(i);
+  }
+  return chosen;
+}
+
+std::vector<LoopClosing::Revisit> LoopClosing::TryRevisits(std::size_t newer,
+                                                           TargetCache* targets) const {
+  const Keyframe& j = keyframes_[newer];
+  std::vector<Revisit> revisits;
+  for (std::size_t older : RevisitCandidates(newer)) {
+    const Registration& registration = targets->For(older);
+    const robotio::Pose2D guess = keyframes_[older].corrected.Between(j.corrected);
+    const RegistrationResult result = registration.Align(j.scan, guess.ToIsometry());
+    Revisit revisit{{keyframes_[older].stamp_ns, j.stamp_ns, guess,
+                     robotio::Pose2D::FromIsometry(result.T_target_source), result.fitness_rmse_m,
+                     result.inlier_ratio, PlanarStructure(result.planar_information),
+                     LoopClosureOutcome::kClosed},
+                    std::nullopt};
+    LoopClosureAttempt& attempt = revisit.attempt;
+    const robotio::Pose2D correction = guess.Between(attempt.measured);
+    if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
+        result.fitness_rmse_m > config_.max_fitness_rmse_m) {
+      attempt.outcome = LoopClosureOutcome::kPoorFit;
+    } else if (std::hypot(correction.x, correction.y) > config_.max_correction_m ||
+               std::abs(correction.theta) > config_.max_correction_rad) {
+      attempt.outcome = LoopClosureOutcome::kImplausible;
+    } else {
+      PoseGraphEdge edge;
+      edge.from = older;
+      edge.to = newer;
+      edge.measured = attempt.measured;
+      // The registration's information is in the target (older keyframe's) frame with
+      // the yaw about the source origin: the same frame and yaw as the edge's error.
+      edge.information = result.planar_information * config_.closure_information_scale;
+      edge.closure = true;
+      revisit.edge = edge;
     }
+    revisits.push_back(std::move(revisit));
   }
-  if (best == keyframes_.size()) return std::nullopt;
-  if (*target_of != best) {
-    registration->SetTarget(LocalMap(best));
-    *target_of = best;
-  }
-  const robotio::Pose2D guess = keyframes_[best].corrected.Between(j.corrected);
-  const RegistrationResult result = registration->Align(j.scan, guess.ToIsometry());
-  Revisit revisit{{keyframes_[best].stamp_ns, j.stamp_ns, guess,
-                   robotio::Pose2D::FromIsometry(result.T_target_source), result.fitness_rmse_m,
-                   result.inlier_ratio, PlanarStructure(result.planar_information),
-                   LoopClosureOutcome::kClosed},
-                  std::nullopt};
-  LoopClosureAttempt& attempt = revisit.attempt;
-  const robotio::Pose2D correction = guess.Between(attempt.measured);
-  if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
-      result.fitness_rmse_m > config_.max_fitness_rmse_m) {
-    attempt.outcome = LoopClosureOutcome::kPoorFit;
-  } else if (std::hypot(correction.x, correction.y) > config_.max_correction_m ||
-             std::abs(correction.theta) > config_.max_correction_rad) {
-    attempt.outcome = LoopClosureOutcome::kImplausible;
-  } else {
-    PoseGraphEdge edge;
-    edge.from = best;
-    edge.to = newer;
-    edge.measured = attempt.measured;
-    // The registration's information is in the target (older keyframe's) frame with
-    // the yaw about the source origin: the same frame and yaw as the edge's error.
-    edge.information = result.planar_information * config_.closure_information_scale;
-    edge.closure = true;
-    revisit.edge = edge;
-  }
-  return revisit;
+  return revisits;
 }
 
 void LoopClosing::Solve(const std::vector<PoseGraphEdge>& closures,
@@ -206,16 +242,15 @@ LoopClosureSummary LoopClosing::Close() {
   if (keyframes_.size() < 2) return summary;
   std::vector<PoseGraphEdge> closures;
   std::vector<std::size_t> closure_attempts;  // Per closure, its attempt.
-  Registration registration(config_.registration);
-  std::size_t target_of = keyframes_.size();  // Keyframe whose local map is the target.
+  TargetCache targets(*this);
   for (std::size_t j = 0; j < keyframes_.size(); ++j) {
-    std::optional<Revisit> revisit = TryRevisit(j, &registration, &target_of);
-    if (!revisit) continue;
-    if (revisit->edge) {
-      closures.push_back(*revisit->edge);
-      closure_attempts.push_back(summary.attempts.size());
+    for (const Revisit& revisit : TryRevisits(j, &targets)) {
+      if (revisit.edge) {
+        closures.push_back(*revisit.edge);
+        closure_attempts.push_back(summary.attempts.size());
+      }
+      summary.attempts.push_back(revisit.attempt);
     }
-    summary.attempts.push_back(revisit->attempt);
   }
   if (!closures.empty()) Solve(closures, closure_attempts, &summary);
   return summary;
@@ -225,14 +260,16 @@ std::optional<robotio::Pose2D> LoopClosing::CloseNewest() {
   online_.keyframes = keyframes_.size();
   if (keyframes_.empty()) return std::nullopt;
   const std::size_t newest = keyframes_.size() - 1;
-  Registration registration(config_.registration);
-  std::size_t target_of = keyframes_.size();
-  std::optional<Revisit> revisit = TryRevisit(newest, &registration, &target_of);
-  if (!revisit) return std::nullopt;
-  online_.attempts.push_back(revisit->attempt);
-  if (!revisit->edge) return std::nullopt;
-  online_closures_.push_back(*revisit->edge);
-  online_closure_attempts_.push_back(online_.attempts.size() - 1);
+  TargetCache targets(*this);
+  bool closed = false;
+  for (const Revisit& revisit : TryRevisits(newest, &targets)) {
+    online_.attempts.push_back(revisit.attempt);
+    if (!revisit.edge) continue;
+    online_closures_.push_back(*revisit.edge);
+    online_closure_attempts_.push_back(online_.attempts.size() - 1);
+    closed = true;
+  }
+  if (!closed) return std::nullopt;
   const robotio::Pose2D before = keyframes_[newest].corrected;
   Solve(online_closures_, online_closure_attempts_, &online_);
   // A closure the graph dropped stays out of later solves.

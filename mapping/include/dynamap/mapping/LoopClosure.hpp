@@ -28,6 +28,13 @@ struct LoopClosureConfig {
   // A loop: a keyframe near (x/y, by SLAM's poses) one at least this much older.
   double min_time_gap_s = 20.0;
   double search_radius_m = 1.0;
+  // Older keyframes registered against per revisit, each from another stretch of the
+  // path (more than two local-map widths apart in sequence), in the order of distance +
+  // heading_weight × heading difference: a revisit facing another way overlaps little
+  // with the nearest keyframe's view. Every one that fits is a closure. 1 and 0 m/rad:
+  // the nearest keyframe only.
+  int revisit_candidates = 1;
+  double heading_weight_m_per_rad = 0.0;
   // The older keyframe's local map: it and this many keyframes on each side, placed by
   // SLAM's poses (consistent over such a short stretch), thinned to the scan's voxel.
   int local_map_half_width = 3;
@@ -138,15 +145,17 @@ class LoopClosing {
   // The older keyframe `centre`'s local map in its own frame.
   [[nodiscard]] robotio::PointList LocalMap(std::size_t centre) const;
   [[nodiscard]] PoseGraphEdge SequenceEdge(std::size_t to) const;  // From the one before.
-  // Keyframe `newer` against the nearest estimate old enough to make a loop: the attempt
-  // (none when there is no such keyframe) and, when it is plausible, its graph edge.
-  // `target_of` names the keyframe whose local map `registration` holds.
+  // Older keyframes to register keyframe `newer` against (old enough to make a loop,
+  // within the search radius), best first.
+  [[nodiscard]] std::vector<std::size_t> RevisitCandidates(std::size_t newer) const;
+  // Keyframe `newer` against each of its candidates: the attempt and, when it is
+  // plausible, its graph edge. `targets` keeps the local maps' registrations built.
   struct Revisit {
     LoopClosureAttempt attempt;
     std::optional<PoseGraphEdge> edge;
   };
-  std::optional<Revisit> TryRevisit(std::size_t newer, Registration* registration,
-                                    std::size_t* target_of) const;
+  class TargetCache;
+  std::vector<Revisit> TryRevisits(std::size_t newer, TargetCache* targets) const;
   // Solves the sequence edges with `closures`, from the current estimates; marks the
   // attempts of dropped closures (indices into `summary->attempts`) and keeps the result.
   void Solve(const std::vector<PoseGraphEdge>& closures,
