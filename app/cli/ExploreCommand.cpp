@@ -150,7 +150,7 @@ void Run(const ExploreOptions& options) {
       known_m2 *= s.grid->resolution_m * s.grid->resolution_m;
     }
     char loops[32] = "";
-    // Closures that moved the pose so far (only when they are made as the robot goes).
+    // Times closures moved the pose so far (only when they are made as the robot goes).
     if (config.poses == runtime::PoseSource::kSlam && config.slam.loop_closure.enabled &&
         config.slam.loop_closure.correct_while_running) {
       std::snprintf(loops, sizeof(loops), "  loops %lld", static_cast<long long>(s.loop_closures));

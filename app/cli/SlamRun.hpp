@@ -76,7 +76,6 @@ struct SlamRunResult {
 // The per-scan records as CSV, one header line, SI units and radians.
 [[nodiscard]] std::string ScanRecordsCsv(const std::vector<SlamScanRecord>& scans);
 
-
 // Errors (an unreadable frame) are reported through Expected. `progress` gets the
 // fraction of scans done.
 [[nodiscard]] robotio::Expected<SlamRunResult> RunSlam(

@@ -1,5 +1,5 @@
 // Loop closure: keyframes (scans every half metre or so, with the poses SLAM gave them),
-// each registered against the local map of an older keyframe near it, and a planar pose
+// each registered against the local maps of older keyframes near it, and a planar pose
 // graph (PoseGraph.hpp) that bends the trajectory so that places seen twice agree. SLAM's
 // scan-to-map loop cannot correct a map once written (thesis Algorithm 4 has no such
 // step); this is where revisits do. Over a finished pass (Close(): dynamap map, and a
@@ -29,7 +29,7 @@ struct LoopClosureConfig {
   double min_time_gap_s = 20.0;
   double search_radius_m = 1.5;
   // Older keyframes registered against per revisit, each from another stretch of the
-  // path (more than two local-map widths apart in sequence), in the order of distance +
+  // path (local maps that share no keyframe), in the order of distance +
   // heading_weight × heading difference: a revisit facing another way overlaps little
   // with the nearest keyframe's view. Every one that fits is a closure. On the replayed
   // office mission (seed 1) the nearest keyframe within 1 m left 0.136 m ATE (31 of 273
@@ -63,9 +63,10 @@ struct LoopClosureConfig {
   RegistrationConfig registration;  // ICP for the closures.
   // In a mission: each closure moves SLAM's pose as soon as it is found (CloseNewest)
   // instead of all of them correcting the trajectory once at the end (Close). Off: on the
-  // office (seed 1) the closures taken as they came left the mission's ATE at 0.92 m,
-  // against 0.15 m closed at the end; a wrong one is applied before any later one can contradict it, and the map
-  // goes on from the wrong pose (docs/RESULTS.md).
+  // office (seed 1, revisits against the nearest keyframe only) the closures taken as
+  // they came left the mission's ATE at 0.92 m, against 0.15 m closed at the end; a
+  // wrong one is applied before any later one can contradict it, and the map goes on
+  // from the wrong pose (docs/RESULTS.md).
   bool correct_while_running = false;
 };
 
@@ -120,8 +121,8 @@ class LoopClosing {
   // Finds the closures, optimises the graph and keeps the corrected keyframe poses.
   LoopClosureSummary Close();
 
-  // Online, right after Offer() kept a keyframe: tries the revisit of that keyframe and,
-  // when it closes, solves the graph over every keyframe and the closures kept so far.
+  // Online, right after Offer() kept a keyframe: tries that keyframe's revisits and, when
+  // any closes, solves the graph over every keyframe and the closures kept so far.
   // Returns how the newest keyframe moved (T_map_base ← correction ∘ T_map_base; none
   // when nothing closed). The caller must move its pose by it (SlamLoop::ApplyCorrection):
   // the poses offered from then on are taken to be in the corrected frame.

@@ -64,7 +64,7 @@ struct MissionCounters {
   std::atomic<std::int64_t> frames_processed{0};
   std::atomic<std::int64_t> registrations_accepted{0};
   std::atomic<std::int64_t> registrations_rejected{0};
-  // Closures that moved the pose as they were found (correct_while_running).
+  // Keyframes whose closures moved the pose as they were found (correct_while_running).
   std::atomic<std::int64_t> loop_closures{0};
   std::atomic<std::int64_t> collisions{0};
   std::atomic<std::int64_t> guard_stops{0};

@@ -36,7 +36,7 @@ struct MissionSnapshot {
   std::int64_t frames_processed = 0;
   std::int64_t collisions = 0;
   std::int64_t guard_stops = 0;
-  std::int64_t loop_closures = 0;           // Closures that moved the SLAM pose.
+  std::int64_t loop_closures = 0;           // Times closures moved the SLAM pose.
   robotio::VelocityCommand command;         // Last velocity command sent.
   bool exploration_done = false;
   double time_limit_s = 0.0;                // Mission time at which it ends (a replay: its length).
