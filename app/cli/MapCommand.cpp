@@ -344,6 +344,9 @@ void RunMap(const MapOptions& o) {
     if (slam->loop_closure) {
       Check(robotio::WriteFileAtomically((out / "loop_closures.csv").string(),
                                          mapping::LoopClosureAttemptsCsv(slam->loop_closure->attempts)));
+      // What the SLAM pass gave, for loop closure alone again (bench_loop_closure).
+      Check(robotio::WriteTumTrajectory(slam->trajectory_before_loop_closure,
+                                        (out / "trajectory_before_loop_closure.tum").string()));
     }
     AddSlamReport(reader, o, *slam, &report);
     // Where along the way the estimate was off, beside what loop closure and odometry
@@ -429,7 +432,8 @@ void RegisterMapCommand(CLI::App& app) {
   auto options = std::make_shared<MapOptions>();
   CLI::App* map = app.add_subcommand(
       "map", "Integrate a recording into the dual static/dynamic 3D map with SLAM (or known) poses; "
-             "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png, trajectory.tum, slam_scans.csv, "
+             "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png, trajectory.tum (and "
+             "trajectory_before_loop_closure.tum), slam_scans.csv, "
              "loop_closures.csv, trajectory_error.png (with ground truth) and report.json");
   map->add_option("--log", options->log,
                   "Recording directory (dynamap's or a TUM RGB-D sequence), or an OpenNI2 .oni "

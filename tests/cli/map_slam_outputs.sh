@@ -26,6 +26,9 @@ grep -q '"closures": 0' "$scratch/map/report.json" || {
   echo "a 2 s drive closed a loop" >&2; exit 1; }
 [ "$(cat "$scratch/map/loop_closures.csv")" = "older_stamp_s,newer_stamp_s,guess_x,guess_y,guess_theta,measured_x,measured_y,measured_theta,fitness_rmse_m,inlier_ratio,structure,outcome" ] || {
   echo "loop_closures.csv is not a header alone" >&2; exit 1; }
+# What the SLAM pass gave is kept beside the corrected trajectory; nothing closed, so the two agree.
+cmp -s "$scratch/map/trajectory_before_loop_closure.tum" "$scratch/map/trajectory.tum" || {
+  echo "trajectory_before_loop_closure.tum missing or unlike trajectory.tum without closures" >&2; exit 1; }
 grep -q '"ate_rmse_m_before_loop_closure": [0-9]' "$scratch/map/report.json" || {
   echo "report.json lacks the ATE before loop closure" >&2; exit 1; }
 # The recording has ground truth: the error over time is drawn.
