@@ -263,19 +263,10 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
   const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
   robotio::PointList scan_map =
       VoxelGridFilter(Transformed(merged, step.predicted), map_.config().voxel_filter_m);
-  const std::size_t before_filter = scan_map.size();
-  robotio::PointList unfiltered = scan_map;
   if (config_.filter_dynamic && config_.filter_free_space) {
     scan_map = RemovePointsOfChange(scan_map, map_, identity);
   } else if (config_.filter_dynamic) {
     scan_map = RemoveDynamicPoints(scan_map, map_, identity);
-  }
-  keyframe_scan_filtered_ = scan_map.size() != before_filter;
-  if (keyframe_scan_filtered_) {
-    keyframe_scan_ = Transformed(config_.registration_voxel_m > 0.0
-                                     ? VoxelGridFilter(unfiltered, config_.registration_voxel_m)
-                                     : unfiltered,
-                                 step.predicted.Inverse());
   }
   step.scan_points = scan_map.size();
   step.preprocess_s = SecondsSince(t);

@@ -479,32 +479,5 @@ TEST(SlamLoop, TheRegisteredScanAndSurfaceMeansStopAtTheRegistrationDepth) {
   EXPECT_EQ(centres_near, far_near);
 }
 
-
-// Loop closure gets each scan as registration gets it but without the dynamic filter: at
-// a revisit after drift the walls fall where the map had free space and would be filtered
-// as "appeared". Without the filter the two scans are the same; with it, every point the
-// filter took is back in the keyframe scan.
-TEST(SlamLoop, LoopClosureGetsTheScanBeforeTheDynamicFilter) {
-  const OfficeDrive drive = DriveThroughTheOffice(true);
-  ASSERT_GT(drive.scans.size(), 50u);
-  SlamConfig unfiltered_config;
-  unfiltered_config.filter_dynamic = false;
-  SlamLoop unfiltered(unfiltered_config, CoarseMapping(), drive.rig);
-  SlamLoop filtered(SlamConfig{}, CoarseMapping(), drive.rig);
-  std::size_t thinned = 0;  // Scans the filter took points from.
-  for (std::size_t s = 0; s < drive.scans.size(); ++s) {
-    ProcessDriveScan(drive, s, &unfiltered);
-    ASSERT_EQ(unfiltered.last_keyframe_scan().size(), unfiltered.last_registered_scan().size());
-    for (std::size_t i = 0; i < unfiltered.last_keyframe_scan().size(); ++i) {
-      ASSERT_EQ(unfiltered.last_keyframe_scan()[i], unfiltered.last_registered_scan()[i]);
-    }
-    ProcessDriveScan(drive, s, &filtered);
-    ASSERT_GE(filtered.last_keyframe_scan().size(), filtered.last_registered_scan().size());
-    if (filtered.last_keyframe_scan().size() > filtered.last_registered_scan().size()) ++thinned;
-  }
-  std::printf("scans the dynamic filter thinned: %zu of %zu\n", thinned, drive.scans.size());
-  EXPECT_GT(thinned, 0u);
-}
-
 }  // namespace
 }  // namespace dynamap::mapping

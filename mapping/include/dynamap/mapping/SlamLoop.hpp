@@ -154,14 +154,6 @@ class SlamLoop {
   [[nodiscard]] const SlamConfig& config() const { return config_; }
   // The last scan's points as registered (preprocessed, thinned, base frame at its time).
   [[nodiscard]] const robotio::PointList& last_registered_scan() const { return last_scan_; }
-  // The last scan thinned the same way but without the dynamic filter: what loop closure
-  // registers. At a revisit after drift the walls land where the map had free space, the
-  // dynamic map takes them for something that appeared, and the filter strips the very
-  // structure a closure needs (on a recorded office mission: ATE 0.124 m with the
-  // filtered scans, 0.053 m without; docs/RESULTS.md).
-  [[nodiscard]] const robotio::PointList& last_keyframe_scan() const {
-    return keyframe_scan_filtered_ ? keyframe_scan_ : last_scan_;
-  }
   // Occupied static voxels near `around` (x/y within map_reference_radius_m, static
   // probability at least map_reference_min_probability), each as the mean of the scan
   // points seen in it (map_reference_surface_points) or as its centre, thinned to the
@@ -200,8 +192,6 @@ class SlamLoop {
                                      const robotio::Pose2D& registered);
   robotio::PointList previous_scan_map_;           // Last scan's points in the map frame.
   robotio::PointList last_scan_;                   // The same in the base frame.
-  robotio::PointList keyframe_scan_;  // last_keyframe_scan() when the filter took points.
-  bool keyframe_scan_filtered_ = false;
   // Running mean of the scan points that fell in each leaf voxel (map frame).
   struct SurfaceSample {
     Eigen::Vector3f sum = Eigen::Vector3f::Zero();
