@@ -6,9 +6,10 @@
 // closed, closures more than 5 cm off the true relative pose, ATE before and after, and
 // the time of Close(). Minutes instead of a SLAM pass per setting when tuning the back end.
 //
-// The keyframe scans are built as SlamLoop builds them for loop closure (both Kinects
-// merged at the scan's time, voxel grid in the map frame, then the registration's coarser
-// grid, no dynamic filter), from the recorded frames and the trajectory's poses.
+// The keyframe scans are built as SlamLoop builds its registered scan (both Kinects merged
+// at the scan's time, voxel grid in the map frame, then the registration's coarser grid),
+// except that points in the dynamic map are not removed: there is no map here. The
+// figures are therefore near the pipeline's, not equal (docs/RESULTS.md, SLAM).
 //
 // Usage: bench_loop_closure --log REC --trajectory TUM [--settings YAML]... [--out DIR]
 //   YAML: the keys of mapping::SlamConfig (only loop_closure: matters), as for
@@ -52,7 +53,7 @@ mapping::Trajectory2D Planar(const robotio::Trajectory& trajectory) {
   return planar;
 }
 
-// SlamLoop::last_keyframe_scan() of these frames (base frame at the scan's time).
+// The scan SlamLoop registers (base frame at the scan's time), without the dynamic filter.
 robotio::PointList RegisteredScan(const std::vector<robotio::DepthFrame>& frames,
                                   const mapping::Trajectory2D& poses, const robotio::Rig& rig,
                                   const mapping::SlamConfig& slam,
