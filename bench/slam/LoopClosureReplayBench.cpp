@@ -31,7 +31,6 @@
 #include "dynamap/mapping/SlamLoop.hpp"
 #include "dynamap/mapping/TrajectoryEvaluation.hpp"
 #include "dynamap/robotio/AtomicFile.hpp"
-#include "dynamap/robotio/DepthProjection.hpp"
 #include "dynamap/robotio/RecordingReader.hpp"
 #include "dynamap/robotio/Time.hpp"
 #include "dynamap/robotio/TumTrajectory.hpp"
@@ -59,22 +58,13 @@ robotio::PointList RegisteredScan(const std::vector<robotio::DepthFrame>& frames
                                   const mapping::SlamConfig& slam,
                                   const mapping::MappingConfig& mapping) {
   const robotio::Pose2D at_scan = mapping::PoseAt(poses, frames.front().stamp_ns);
-  robotio::PointList merged;
+  std::vector<robotio::Pose2D> offsets;  // Base at the scan's time ← base at frame k.
   for (const robotio::DepthFrame& frame : frames) {
-    const auto sensor = static_cast<std::size_t>(frame.sensor_id);
-    if (sensor >= rig.kinects.size()) continue;
-    robotio::KinectMount mount = rig.kinects[sensor];
-    mount.max_range_m = std::min(mount.max_range_m, mapping.max_range_m);
-    if (slam.registration_max_depth_m > 0.0) {
-      mount.max_range_m = std::min(mount.max_range_m, slam.registration_max_depth_m);
-    }
-    const robotio::Pose2D offset = at_scan.Between(mapping::PoseAt(poses, frame.stamp_ns));
-    const robotio::PointList points = mapping::TransformedPoints(
-        robotio::DepthToBasePoints(frame, mount), offset.ToIsometry());
-    merged.insert(merged.end(), points.begin(), points.end());
+    offsets.push_back(at_scan.Between(mapping::PoseAt(poses, frame.stamp_ns)));
   }
-  const robotio::PointList in_map = mapping::VoxelGridFilter(
-      mapping::TransformedPoints(merged, at_scan.ToIsometry()), mapping.voxel_filter_m);
+  const robotio::PointList in_map =
+      mapping::ScanPointsInMap(frames, offsets, mapping::RegistrationRig(rig, slam, mapping),
+                               at_scan, mapping.voxel_filter_m);
   const robotio::PointList sparse = slam.registration_voxel_m > 0.0
                                         ? mapping::VoxelGridFilter(in_map, slam.registration_voxel_m)
                                         : in_map;

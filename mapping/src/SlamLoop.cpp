@@ -107,6 +107,37 @@ robotio::Expected<SlamConfig> LoadSlamConfig(const std::string& file) {
       file, [](robotio::ConfigNode& node) { return ParseSlamConfig(node); });
 }
 
+robotio::Rig RegistrationRig(robotio::Rig rig, const SlamConfig& slam,
+                             const MappingConfig& mapping) {
+  for (auto& mount : rig.kinects) {
+    mount.max_range_m = std::min(mount.max_range_m, mapping.max_range_m);
+    if (slam.registration_max_depth_m > 0.0) {
+      mount.max_range_m = std::min(mount.max_range_m, slam.registration_max_depth_m);
+    }
+  }
+  return rig;
+}
+
+robotio::PointList ScanPointsInMap(const std::vector<robotio::DepthFrame>& frames,
+                                   const std::vector<robotio::Pose2D>& frame_offsets,
+                                   const robotio::Rig& rig, const robotio::Pose2D& at_scan,
+                                   double voxel_m) {
+  robotio::PointList merged;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const auto sensor = static_cast<std::size_t>(frames[k].sensor_id);
+    if (sensor >= rig.kinects.size()) continue;
+    const robotio::PointList points =
+        Transformed(robotio::DepthToBasePoints(frames[k], rig.kinects[sensor]), frame_offsets[k]);
+    merged.insert(merged.end(), points.begin(), points.end());
+  }
+  // Thinned on a grid fixed in the map (at the scan's pose), not on one fixed to the
+  // robot: voxel centroids of a robot-fixed grid sit at the same place in the robot frame
+  // scan after scan, a lattice that moves with the robot and pulls registration towards
+  // no motion (scan-to-scan ICP took 10 % off the distance driven on the office tour; see
+  // docs/RESULTS.md). On a map-fixed grid that lattice stays put like the walls.
+  return VoxelGridFilter(Transformed(merged, at_scan), voxel_m);
+}
+
 SlamLoop::SlamLoop(SlamConfig config, const MappingConfig& mapping, robotio::Rig rig)
     : config_(std::move(config)),
       rig_(std::move(rig)),
@@ -116,12 +147,7 @@ SlamLoop::SlamLoop(SlamConfig config, const MappingConfig& mapping, robotio::Rig
   for (auto& mount : rig_.kinects) {
     mount.max_range_m = std::min(mount.max_range_m, mapping.max_range_m);
   }
-  scan_rig_ = rig_;
-  if (config_.registration_max_depth_m > 0.0) {
-    for (auto& mount : scan_rig_.kinects) {
-      mount.max_range_m = std::min(mount.max_range_m, config_.registration_max_depth_m);
-    }
-  }
+  scan_rig_ = RegistrationRig(rig_, config_, mapping);
 }
 
 robotio::PointList SlamLoop::MapReference(const robotio::Pose2D& around) const {
@@ -245,24 +271,12 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
   // Line 5: both Kinects in base at the scan's time, voxel filter, dynamic points out.
   auto t = Clock::now();
   std::vector<robotio::Pose2D> frame_offsets;  // base at the scan time ← base at frame k.
-  robotio::PointList merged;
-  for (std::size_t k = 0; k < frames.size(); ++k) {
-    frame_offsets.push_back(odometry.Between(odometry_at_frames[k]));
-    const auto sensor = static_cast<std::size_t>(frames[k].sensor_id);
-    if (sensor >= rig_.kinects.size()) continue;
-    const robotio::PointList points =
-        Transformed(robotio::DepthToBasePoints(frames[k], scan_rig_.kinects[sensor]),
-                    frame_offsets[k]);
-    merged.insert(merged.end(), points.begin(), points.end());
+  for (const robotio::Pose2D& at_frame : odometry_at_frames) {
+    frame_offsets.push_back(odometry.Between(at_frame));
   }
-  // Thinned on a grid fixed in the map (at the predicted pose), not on one fixed to the
-  // robot: voxel centroids of a robot-fixed grid sit at the same place in the robot frame
-  // scan after scan, a lattice that moves with the robot and pulls registration towards
-  // no motion (scan-to-scan ICP took 10 % off the distance driven on the office tour; see
-  // docs/RESULTS.md). On a map-fixed grid that lattice stays put like the walls.
   const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
-  robotio::PointList scan_map =
-      VoxelGridFilter(Transformed(merged, step.predicted), map_.config().voxel_filter_m);
+  robotio::PointList scan_map = ScanPointsInMap(frames, frame_offsets, scan_rig_, step.predicted,
+                                                map_.config().voxel_filter_m);
   if (config_.filter_dynamic && config_.filter_free_space) {
     scan_map = RemovePointsOfChange(scan_map, map_, identity);
   } else if (config_.filter_dynamic) {

@@ -119,6 +119,20 @@ struct SlamConfig {
 // The same from a YAML file whose root holds those keys; errors name the file and key.
 [[nodiscard]] robotio::Expected<SlamConfig> LoadSlamConfig(const std::string& file);
 
+// `rig` with each Kinect's range cut as SlamLoop cuts the scans it registers: to the
+// map's insertion range and to registration_max_depth_m.
+[[nodiscard]] robotio::Rig RegistrationRig(robotio::Rig rig, const SlamConfig& slam,
+                                           const MappingConfig& mapping);
+
+// One scan as SlamLoop takes it before the dynamic filter, in the map frame: each frame
+// (a Kinect of `rig`, seen from base at its own capture time) moved by frame_offsets[k]
+// into base at the scan's time, all placed at `at_scan` and thinned to `voxel_m` on a
+// grid fixed in the map.
+[[nodiscard]] robotio::PointList ScanPointsInMap(const std::vector<robotio::DepthFrame>& frames,
+                                                 const std::vector<robotio::Pose2D>& frame_offsets,
+                                                 const robotio::Rig& rig,
+                                                 const robotio::Pose2D& at_scan, double voxel_m);
+
 // What one scan did, for reports and run statistics.
 struct SlamStep {
   robotio::Pose2D predicted;  // T_map_base from odometry alone, before registration.
