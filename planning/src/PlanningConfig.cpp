@@ -77,6 +77,25 @@ void ReadGuard(robotio::ConfigNode& n, CollisionGuardConfig* c) {
   n.Read("report_range_m", &c->report_range_m, 0.0, 10.0);
 }
 
+void ReadMemory(robotio::ConfigNode& n, ObstacleMemoryConfig* c) {
+  n.Read("cell_m", &c->cell_m, 0.005, 1.0);
+  n.Read("keep_s", &c->keep_s, 0.0, 600.0);
+  n.Read("range_m", &c->range_m, 0.1, 20.0);
+}
+
+void ReadPathShift(robotio::ConfigNode& n, PathShiftConfig* c) {
+  n.Read("enabled", &c->enabled);
+  n.Read("max_shift_m", &c->max_shift_m, 0.0, 1.0);
+  n.Read("step_m", &c->step_m, 0.005, 0.5);
+  n.Read("behind_m", &c->behind_m, 0.0, 5.0);
+  n.Read("ahead_m", &c->ahead_m, 0.0, 5.0);
+  n.Read("sample_m", &c->sample_m, 0.01, 1.0);
+  n.Read("comfort_m", &c->comfort_m, 0.0, 1.0);
+  n.Read("shift_cost", &c->shift_cost, 0.0, 10.0);
+  n.Read("min_gain_m", &c->min_gain_m, 0.0, 1.0);
+  n.Read("rate_mps", &c->rate_mps, 0.0, 5.0);
+}
+
 }  // namespace
 
 PlanningConfig ParsePlanningConfig(robotio::ConfigNode& node, PlanningConfig config) {
@@ -92,6 +111,8 @@ PlanningConfig ParsePlanningConfig(robotio::ConfigNode& node, PlanningConfig con
   }
   if (auto n = node.OptionalChild("follower")) ReadFollower(*n, &config.follower);
   if (auto n = node.OptionalChild("guard")) ReadGuard(*n, &config.guard);
+  if (auto n = node.OptionalChild("memory")) ReadMemory(*n, &config.memory);
+  if (auto n = node.OptionalChild("path_shift")) ReadPathShift(*n, &config.path_shift);
   if (config.projection.step_height_m >= config.projection.robot_height_m) {
     node.Fail("projection.step_height_m", "must be below projection.robot_height_m");
   }

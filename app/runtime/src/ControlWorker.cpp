@@ -2,6 +2,9 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/MapGuard.hpp"
 #include "dynamap/robotio/Time.hpp"
@@ -13,16 +16,60 @@ ControlWorker::ControlWorker(Mediator& mediator, robotio::Rig rig, ControlWorker
       rig_(std::move(rig)),
       config_(config),
       follower_(config.follower),
-      stall_(config.stall) {}
+      stall_(config.stall),
+      memory_(config.memory),
+      shift_(config.path_shift) {}
+
+void ControlWorker::TakeNewFrames(std::int64_t now_ns) {
+  // The guard's protected zone reaches radius + stopping distance at top speed; the memory
+  // keeps what is within its range.
+  const double range = std::max({config_.memory.range_m, config_.guard.report_range_m,
+                                 config_.guard.footprint_radius_m +
+                                     config_.guard.safety_margin_m +
+                                     planning::StoppingDistance(config_.follower.max_speed_mps,
+                                                                config_.guard)});
+  for (std::size_t i = 0; i < mediator_.latest_depth.size(); ++i) {
+    if (mediator_.latest_depth[i].version() == frame_version_[i]) continue;
+    const auto frame = mediator_.latest_depth[i].Get();
+    if (!frame) continue;
+    frame_version_[i] = frame->version;
+    frame_points_[i] = planning::RobotHeightPoints(frame->value, rig_, config_.guard, range);
+    // Placed by dead reckoning at the frame's capture instant.
+    if (const auto odom = mediator_.odometry.PoseAt(frame->value.stamp_ns)) {
+      memory_.Insert(frame_points_[i], *odom, frame->value.stamp_ns);
+    }
+  }
+  memory_.Forget(now_ns);
+}
+
+robotio::Pose2D ControlWorker::PoseOnPath(const Plan* plan, const robotio::Pose2D& pose,
+                                          double dt_s) {
+  std::vector<Eigen::Vector2d> seen_map;
+  const auto odom = mediator_.odometry.Latest();
+  if (plan != nullptr && plan->has_goal && odom) {
+    const double radius = config_.path_shift.ahead_m + config_.path_shift.max_shift_m +
+                          config_.guard.footprint_radius_m + config_.path_shift.comfort_m;
+    for (const Eigen::Vector2d& p : memory_.PointsNear(odom->pose, radius)) {
+      const robotio::Pose2D q = pose.Compose({p.x(), p.y(), 0.0});
+      seen_map.emplace_back(q.x, q.y);
+    }
+  }
+  const Eigen::Vector2d shift =
+      shift_.Update(plan != nullptr ? plan->path_map : std::vector<Eigen::Vector2d>{},
+                    {pose.x, pose.y}, seen_map, config_.guard.footprint_radius_m, dt_s);
+  const auto shift_mm = static_cast<std::int64_t>(std::lround(1e3 * shift.norm()));
+  if (shift_mm > 20) ++mediator_.counters.path_shift_steps;
+  if (shift_mm > mediator_.counters.path_shift_max_mm.load()) {
+    mediator_.counters.path_shift_max_mm.store(shift_mm);
+  }
+  return {pose.x - shift.x(), pose.y - shift.y(), pose.theta};
+}
 
 robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
   // Guard first, on raw frames: a person stepping in is seen before any map knows.
-  std::vector<robotio::DepthFrame> frames;
-  for (const auto& slot : mediator_.latest_depth) {
-    if (auto frame = slot.Get()) frames.push_back(std::move(frame->value));
-  }
-  std::vector<const robotio::DepthFrame*> pointers;
-  for (const auto& f : frames) pointers.push_back(&f);
+  TakeNewFrames(now_ns);
+  std::vector<Eigen::Vector2d> points;
+  for (const auto& some : frame_points_) points.insert(points.end(), some.begin(), some.end());
   const robotio::Pose2D pose = mediator_.CurrentPose();
   // Driving commanded and not moving: pressed against something no Kinect sees (within
   // their 0.5 m blind range). The planner gets it in the way; the base backs away from it.
@@ -39,7 +86,7 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
     return {now_ns, 0.0, 0.0};
   }
   const planning::GuardVerdict verdict =
-      planning::CheckCollision(pointers, rig_, last_, config_.guard);
+      planning::CheckCollisionPoints(points, last_, config_.guard);
   if (verdict.stop) {
     ++mediator_.counters.guard_stops;
     std::vector<Eigen::Vector2d> obstacles_map;
@@ -54,9 +101,10 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
     return {now_ns, 0.0, 0.0};
   }
   const auto plan = mediator_.plan.Get();
+  const robotio::Pose2D on_path = PoseOnPath(plan ? &plan->value : nullptr, pose, dt_s);
   if (now_ns < recovery_until_ns_) {
     // Backing off goes where no Kinect looks: the map says what is behind.
-    return HoldAtKnownObstacles(plan ? plan->value.map : nullptr, pose,
+    return HoldAtKnownObstacles(plan ? plan->value.map : nullptr, on_path,
                                 {now_ns, recovery_.v, recovery_.omega});
   }
 
@@ -79,14 +127,14 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
   if (!plan->value.has_goal || plan->value.path_map.empty()) return {now_ns, 0.0, 0.0};
   double clearance = config_.guard.footprint_radius_m;
   if (plan->value.map && plan->value.clearance) {
-    const planning::GridIndex cell = plan->value.map->CellAt(pose.x, pose.y);
+    const planning::GridIndex cell = plan->value.map->CellAt(on_path.x, on_path.y);
     if (plan->value.map->Contains(cell)) {
       clearance = planning::Clearance(*plan->value.clearance, cell, config_.cost);
     }
   }
-  planning::FollowerOutput out = follower_.Step(pose, clearance, dt_s);
+  planning::FollowerOutput out = follower_.Step(on_path, clearance, dt_s);
   out.command.stamp_ns = now_ns;
-  return HoldAtKnownObstacles(plan->value.map, pose, out.command);
+  return HoldAtKnownObstacles(plan->value.map, on_path, out.command);
 }
 
 robotio::VelocityCommand ControlWorker::HoldAtKnownObstacles(

@@ -179,6 +179,8 @@ robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra
       {"guard_stops", r.guard_stops},
       {"map_guard_stops", r.map_guard_stops},
       {"stall_stops", r.stall_stops},
+      {"path_shifted_s", r.path_shifted_s},
+      {"path_shift_max_m", r.path_shift_max_m},
       {"plans", r.plans},
       {"unreachable_targets", r.unreachable_targets},
       {"blocked_plans", r.blocked_plans},

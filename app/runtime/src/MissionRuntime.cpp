@@ -285,6 +285,8 @@ void MissionRuntime::MakeWorkers(const planning::GridMap& area) {
   control.follower = config.planning.follower;
   control.guard = config.planning.guard;
   control.cost = config.planning.cost;
+  control.memory = config.planning.memory;
+  control.path_shift = config.planning.path_shift;
   control_ = std::make_unique<ControlWorker>(*mediator_, rig_, control);
 }
 
@@ -412,6 +414,9 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   r.guard_stops = m.counters.guard_stops.load();
   r.map_guard_stops = m.counters.map_guard_stops.load();
   r.stall_stops = m.counters.stall_stops.load();
+  r.path_shifted_s = static_cast<double>(m.counters.path_shift_steps.load()) /
+                     config_.control_rate_hz;
+  r.path_shift_max_m = 1e-3 * static_cast<double>(m.counters.path_shift_max_mm.load());
   r.plans = m.counters.plans.load();
   r.unreachable_targets = m.counters.unreachable_targets.load();
   r.blocked_plans = m.counters.blocked_plans.load();

@@ -40,11 +40,24 @@ struct GuardVerdict {
 // Stopping distance at forward speed v: reaction travel plus braking.
 [[nodiscard]] double StoppingDistance(double v_mps, const CollisionGuardConfig& config);
 
+// The points of `frame` (taken with `rig`'s mounts) at robot height (config's height band,
+// every pixel_stride-th pixel), as x, y in base, within `range_m` of the base origin. An
+// invalid frame or one of a Kinect the rig does not have gives none.
+[[nodiscard]] std::vector<Eigen::Vector2d> RobotHeightPoints(const robotio::DepthFrame& frame,
+                                                             const robotio::Rig& rig,
+                                                             const CollisionGuardConfig& config,
+                                                             double range_m);
+
 // Checks the frames (any number; one per Kinect) taken with `rig`'s mounts, while the base
 // moves with `command`. Pure: the runtime keeps the latest frame per Kinect.
 [[nodiscard]] GuardVerdict CheckCollision(const std::vector<const robotio::DepthFrame*>& frames,
                                           const robotio::Rig& rig,
                                           const robotio::VelocityCommand& command,
                                           const CollisionGuardConfig& config);
+// The same check on robot-height points already taken out of the frames (RobotHeightPoints
+// with a range of at least the report range and the protected zone's reach).
+[[nodiscard]] GuardVerdict CheckCollisionPoints(const std::vector<Eigen::Vector2d>& points_base,
+                                                const robotio::VelocityCommand& command,
+                                                const CollisionGuardConfig& config);
 
 }  // namespace dynamap::planning

@@ -7,7 +7,9 @@
 #include "dynamap/planning/CollisionGuard.hpp"
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/MapProjection.hpp"
+#include "dynamap/planning/ObstacleMemory.hpp"
 #include "dynamap/planning/PathFollower.hpp"
+#include "dynamap/planning/PathShift.hpp"
 #include "dynamap/planning/SurfaceCoverage.hpp"
 #include "dynamap/planning/TargetPlanner.hpp"
 #include "dynamap/robotio/ConfigReader.hpp"
@@ -25,6 +27,8 @@ struct PlanningConfig {
   SurfaceCoverageConfig coverage;         // Inspection distance and sensor opening.
   PathFollowerConfig follower;            // (v, ω) control.
   CollisionGuardConfig guard;             // Depth-frame collision guard.
+  ObstacleMemoryConfig memory;            // Robot-height points seen lately (odometry frame).
+  PathShiftConfig path_shift;             // Path moved off them where the map pose is off.
 };
 
 // Reads the keys of `node` (the `planning:` mapping) over the defaults in `config`.

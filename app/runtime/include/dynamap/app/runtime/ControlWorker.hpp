@@ -1,15 +1,22 @@
 // The control thread of the mission runtime (thesis ch. 7): at a fixed rate of simulated
 // time, checks the newest raw depth frames with the collision guard (it never waits on SLAM
-// or planning), follows the newest planned path, and publishes the velocity command.
+// or planning), follows the newest planned path, and publishes the velocity command. What
+// the frames showed at robot height is remembered for a few seconds in the odometry frame
+// (planning::ObstacleMemory), and the path is shifted off it where SLAM's map pose is off
+// the map (planning::PathShift).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "dynamap/app/runtime/Mediator.hpp"
 #include "dynamap/planning/CollisionGuard.hpp"
 #include "dynamap/planning/CostField.hpp"
+#include "dynamap/planning/ObstacleMemory.hpp"
 #include "dynamap/planning/PathFollower.hpp"
+#include "dynamap/planning/PathShift.hpp"
 #include "dynamap/planning/StallDetector.hpp"
 #include "dynamap/robotio/Rig.hpp"
 
@@ -29,6 +36,8 @@ struct ControlWorkerConfig {
   planning::CollisionGuardConfig guard;
   planning::StallDetectorConfig stall;
   planning::CostFieldConfig cost;         // To read clearance off the planner's cost grid.
+  planning::ObstacleMemoryConfig memory;
+  planning::PathShiftConfig path_shift;
 };
 
 class ControlWorker {
@@ -38,9 +47,19 @@ class ControlWorker {
   // One control step at mission time `now_ns`, `dt_s` after the previous one: returns the
   // command, which is in force until the next step (Run publishes it).
   robotio::VelocityCommand Tick(std::int64_t now_ns, double dt_s);
+  // m, map frame: the path shift in force (zero while nothing seen lately is near the path).
+  [[nodiscard]] Eigen::Vector2d path_shift() const { return shift_.shift(); }
+  [[nodiscard]] const planning::ObstacleMemory& memory() const { return memory_; }
 
  private:
   [[nodiscard]] robotio::VelocityCommand Step(std::int64_t now_ns, double dt_s);
+  // Robot-height points of the Kinects' frames that arrived since the last step (kept per
+  // Kinect for the guard) into the memory; forgets what is too old.
+  void TakeNewFrames(std::int64_t now_ns);
+  // The pose the follower and the map guard use: SLAM's, moved back by the path shift.
+  // `plan` may be null (no plan yet: no shift).
+  [[nodiscard]] robotio::Pose2D PoseOnPath(const Plan* plan, const robotio::Pose2D& pose,
+                                           double dt_s);
   // `command` with v = 0 when it would drive the footprint into a known obstacle of `map`
   // (planning::DrivesIntoKnownObstacle); counted in map_guard_stops.
   [[nodiscard]] robotio::VelocityCommand HoldAtKnownObstacles(
@@ -52,6 +71,10 @@ class ControlWorker {
   ControlWorkerConfig config_;
   planning::PathFollower follower_;
   planning::StallDetector stall_;
+  planning::ObstacleMemory memory_;
+  planning::PathShift shift_;
+  std::array<std::uint64_t, kMaxKinects> frame_version_{};  // Last frame taken per Kinect.
+  std::array<std::vector<Eigen::Vector2d>, kMaxKinects> frame_points_;  // Its points, base.
   std::uint64_t plan_version_ = 0;
   robotio::VelocityCommand last_;
   std::int64_t recovery_until_ns_ = -1;

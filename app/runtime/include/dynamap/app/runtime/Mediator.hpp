@@ -69,6 +69,10 @@ struct MissionCounters {
   std::atomic<std::int64_t> collisions{0};
   std::atomic<std::int64_t> guard_stops{0};
   std::atomic<std::int64_t> map_guard_stops{0};  // Control steps the map guard held back.
+  // Control steps driven with the path shifted more than 2 cm off what was seen lately
+  // (planning::PathShift), and the largest shift (mm).
+  std::atomic<std::int64_t> path_shift_steps{0};
+  std::atomic<std::int64_t> path_shift_max_mm{0};
   std::atomic<std::int64_t> stall_stops{0};  // Times the base was found pressed against something.
   std::atomic<std::int64_t> plans{0};
   std::atomic<std::int64_t> unreachable_targets{0};

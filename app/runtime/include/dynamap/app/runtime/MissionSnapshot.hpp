@@ -70,6 +70,8 @@ struct MissionReport {
   std::int64_t guard_stops = 0;
   std::int64_t map_guard_stops = 0;  // Control steps the map guard held the base.
   std::int64_t stall_stops = 0;      // Times the base stalled against something unseen.
+  double path_shifted_s = 0.0;       // s driven with the path shifted > 2 cm (PathShift).
+  double path_shift_max_m = 0.0;     // m, the largest path shift.
   std::int64_t plans = 0;
   std::int64_t unreachable_targets = 0;  // Goals given up: no path, even without people.
   std::int64_t blocked_plans = 0;        // Plans that stood waiting for people to move on.
