@@ -53,6 +53,21 @@ robotio::Pose2D ControlWorker::PoseOnPath(const Plan* plan, const robotio::Pose2
       const robotio::Pose2D q = pose.Compose({p.x(), p.y(), 0.0});
       seen_map.emplace_back(q.x, q.y);
     }
+    // No Kinect sees a hole's edge near the base: the map's hole cells keep the shift from
+    // moving the path towards one.
+    if (plan->map) {
+      const planning::GridMap& map = *plan->map;
+      const planning::GridIndex c = map.CellAt(pose.x, pose.y);
+      const int r = static_cast<int>(std::ceil(radius / map.resolution_m));
+      for (int y = c.y - r; y <= c.y + r; ++y) {
+        for (int x = c.x - r; x <= c.x + r; ++x) {
+          const planning::GridIndex n{x, y};
+          if (map.Contains(n) && map.At(n) == planning::CellState::kHole) {
+            seen_map.emplace_back(map.CenterX(x), map.CenterY(y));
+          }
+        }
+      }
+    }
   }
   const Eigen::Vector2d shift =
       shift_.Update(plan != nullptr ? plan->path_map : std::vector<Eigen::Vector2d>{},
