@@ -119,7 +119,7 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
   const robotio::Pose2D on_path = PoseOnPath(plan ? &plan->value : nullptr, pose, dt_s);
   if (now_ns < recovery_until_ns_) {
     // Backing off goes where no Kinect looks: the map says what is behind.
-    return HoldAtKnownObstacles(plan ? plan->value.map : nullptr, on_path,
+    return HoldAtKnownObstacles(plan ? plan->value.map : nullptr, pose, on_path,
                                 {now_ns, recovery_.v, recovery_.omega});
   }
 
@@ -140,27 +140,37 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
     follower_.SetPath(plan->value.path_map, plan->value.look_at_map);
   }
   if (!plan->value.has_goal || plan->value.path_map.empty()) return {now_ns, 0.0, 0.0};
+  // The follower slows by the lesser clearance of the two poses.
   double clearance = config_.guard.footprint_radius_m;
   if (plan->value.map && plan->value.clearance) {
-    const planning::GridIndex cell = plan->value.map->CellAt(on_path.x, on_path.y);
-    if (plan->value.map->Contains(cell)) {
-      clearance = planning::Clearance(*plan->value.clearance, cell, config_.cost);
+    for (const robotio::Pose2D& p : {pose, on_path}) {
+      const planning::GridIndex cell = plan->value.map->CellAt(p.x, p.y);
+      if (plan->value.map->Contains(cell)) {
+        clearance = std::min(clearance,
+                             planning::Clearance(*plan->value.clearance, cell, config_.cost));
+      }
     }
   }
   planning::FollowerOutput out = follower_.Step(on_path, clearance, dt_s);
   out.command.stamp_ns = now_ns;
-  return HoldAtKnownObstacles(plan->value.map, on_path, out.command);
+  return HoldAtKnownObstacles(plan->value.map, pose, on_path, out.command);
 }
 
 robotio::VelocityCommand ControlWorker::HoldAtKnownObstacles(
     const std::shared_ptr<const planning::GridMap>& map, const robotio::Pose2D& pose,
-    robotio::VelocityCommand command) {
+    const robotio::Pose2D& on_path, robotio::VelocityCommand command) {
   // The Kinects see nothing within 0.5 m, beside or behind the base, and no floor within
   // robotio::FloorBlindRadius (1.25 m for the shipped rig): door posts passing out of view
-  // and a stair pit's edge are checked on the map instead.
-  if (map && planning::DrivesIntoKnownObstacle(*map, pose, command,
-                                               config_.guard.footprint_radius_m,
-                                               config_.map_guard_s)) {
+  // and a stair pit's edge are checked on the map instead. With the path shifted, SLAM's
+  // pose and the shifted one must both run into the map's obstacle: the shift exists
+  // because one of them is off the map by up to that much, and holding whenever either
+  // did left the base standing for good in a doorway it had been shifted into.
+  const auto drives_in = [&](const robotio::Pose2D& p) {
+    return planning::DrivesIntoKnownObstacle(*map, p, command, config_.guard.footprint_radius_m,
+                                             config_.map_guard_s);
+  };
+  const bool shifted = pose.x != on_path.x || pose.y != on_path.y;
+  if (map && drives_in(pose) && (!shifted || drives_in(on_path))) {
     command.v = 0.0;
     ++mediator_.counters.map_guard_stops;
   }
