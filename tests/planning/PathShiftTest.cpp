@@ -69,6 +69,21 @@ TEST(PathShift, DoesNotSwerveForSomethingAcrossThePathItCannotClear) {
             Eigen::Vector2d::Zero());
 }
 
+TEST(PathShift, ShiftsOffOneSideNoFurtherThanTheOtherSideAllows) {
+  // A desk edge 2 cm beyond the footprint west of a path running south ...
+  std::vector<Eigen::Vector2d> desk;
+  for (double y = -1.0; y <= 1.0; y += 0.05) desk.emplace_back(-(kFootprint + 0.02), y);
+  const Eigen::Vector2d alone = PathShiftTarget(kPathSouth, {0.0, 0.0}, desk, kFootprint, {});
+  EXPECT_NEAR(alone.x(), 0.06, 0.021);  // ... is left until 0.08 m are between them.
+  // With a pit's edge (the control worker adds the map's hole cells) 0.1 m beyond the
+  // footprint on the east, the shift stops where both are equally near.
+  std::vector<Eigen::Vector2d> both = desk;
+  for (double y = -1.0; y <= 1.0; y += 0.05) both.emplace_back(kFootprint + 0.1, y);
+  const Eigen::Vector2d bounded = PathShiftTarget(kPathSouth, {0.0, 0.0}, both, kFootprint, {});
+  EXPECT_NEAR(bounded.x(), 0.04, 0.021);
+  EXPECT_GE(Clearance(bounded, both), 0.04);
+}
+
 TEST(PathShift, TheShiftInForceFollowsItsTargetAtItsRate) {
   PathShiftConfig config;
   config.rate_mps = 0.2;
