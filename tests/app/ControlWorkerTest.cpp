@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <memory>
 
 #include "dynamap/robotio/Time.hpp"
 
@@ -85,6 +86,44 @@ TEST_F(ControlOnAStraightPath, ABaseThatMovesAsCommandedIsNotStalled) {
   EXPECT_GT(pose_.x, 1.0);
   EXPECT_EQ(mediator_.counters.stall_stops.load(), 0);
   EXPECT_TRUE(mediator_.TakeObstacles().empty());
+}
+
+TEST(ControlWorker, CruisesAtTheSpeedItsGridClearanceAllowsInTheOpen) {
+  // A plan on a free grid with a free clearance grid: the follower is given the grid's
+  // clearance (its proximity range), not the footprint radius as when there is no grid.
+  Mediator mediator(0.0, {});
+  ControlWorkerConfig config;
+  config.initial_still_s = 0.0;
+  config.initial_turn_rad = 0.0;
+  ControlWorker control(mediator, robotio::Rig{}, config);
+  auto map = std::make_shared<planning::GridMap>(200, 80, 0.05, planning::CellState::kNavigable);
+  map->origin_x_m = -1.0;
+  map->origin_y_m = -2.0;
+  Plan plan;
+  plan.has_goal = true;
+  plan.goal_map = {8.0, 0.0};
+  plan.path_map = {{0.0, 0.0}, {8.0, 0.0}};
+  plan.map = map;
+  plan.clearance = std::make_shared<planning::TraversalGrid>(200, 80, 0.0);
+  mediator.plan.Set(plan);
+  robotio::Pose2D pose;
+  double top_speed = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    const double t = i * kDt;
+    mediator.pose_fix.Set({robotio::SecondsToNanos(t), pose, pose});
+    const robotio::VelocityCommand c = control.Tick(robotio::SecondsToNanos(t), kDt);
+    top_speed = std::max(top_speed, c.v);
+    pose.x += c.v * kDt;
+  }
+  planning::PathFollower reference(config.follower);
+  reference.SetPath(plan.path_map);
+  double expected = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    expected = std::max(expected,
+                        reference.Step({}, config.cost.proximity_range_m, kDt).command.v);
+  }
+  EXPECT_NEAR(top_speed, expected, 1e-6);
+  EXPECT_GT(top_speed, 0.7);
 }
 
 }  // namespace

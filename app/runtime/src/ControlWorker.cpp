@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/MapGuard.hpp"
@@ -140,8 +141,9 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
     follower_.SetPath(plan->value.path_map, plan->value.look_at_map);
   }
   if (!plan->value.has_goal || plan->value.path_map.empty()) return {now_ns, 0.0, 0.0};
-  // The follower slows by the lesser clearance of the two poses.
-  double clearance = config_.guard.footprint_radius_m;
+  // The follower slows by the lesser clearance of the two poses (off the grid: the
+  // footprint radius).
+  double clearance = std::numeric_limits<double>::infinity();
   if (plan->value.map && plan->value.clearance) {
     for (const robotio::Pose2D& p : {pose, on_path}) {
       const planning::GridIndex cell = plan->value.map->CellAt(p.x, p.y);
@@ -151,6 +153,7 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
       }
     }
   }
+  if (!std::isfinite(clearance)) clearance = config_.guard.footprint_radius_m;
   planning::FollowerOutput out = follower_.Step(on_path, clearance, dt_s);
   out.command.stamp_ns = now_ns;
   return HoldAtKnownObstacles(plan->value.map, pose, on_path, out.command);
