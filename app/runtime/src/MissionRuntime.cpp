@@ -287,6 +287,8 @@ void MissionRuntime::MakeWorkers(const planning::GridMap& area) {
   control.cost = config.planning.cost;
   control.memory = config.planning.memory;
   control.path_shift = config.planning.path_shift;
+  // The shift makes up for a map pose that is off the map; true poses are not.
+  if (config.poses == PoseSource::kGroundTruth) control.path_shift.enabled = false;
   control_ = std::make_unique<ControlWorker>(*mediator_, rig_, control);
 }
 
