@@ -157,6 +157,9 @@ TEST(ExplorationMission, ExploresTheSmallOffice) {
   EXPECT_GE(report->surface_coverage, 0.4);
   EXPECT_GE(report->dynamic_accuracy, 0.9);
   EXPECT_LE(report->collisions, 1);  // None measured; one contact is a warning, two a bug.
+  // True poses are not off the map: the path is never shifted.
+  EXPECT_EQ(report->path_shifted_s, 0.0);
+  EXPECT_EQ(report->path_shift_max_m, 0.0);
   // It replans as it goes (every 0.5 s unless it is waiting for a turn to finish).
   EXPECT_GE(report->plans, static_cast<std::int64_t>(report->mission_time_s / 2.0));
   for (const char* file : {"map.ot", "static.bt", "dynamic.bt", "trajectory.tum", "groundtruth.tum",

@@ -35,7 +35,8 @@ void ControlWorker::TakeNewFrames(std::int64_t now_ns) {
     if (!frame) continue;
     frame_version_[i] = frame->version;
     frame_points_[i] = planning::RobotHeightPoints(frame->value, rig_, config_.guard, range);
-    // Placed by dead reckoning at the frame's capture instant.
+    // Placed by dead reckoning at the frame's capture instant (only the shift reads it).
+    if (!config_.path_shift.enabled) continue;
     if (const auto odom = mediator_.odometry.PoseAt(frame->value.stamp_ns)) {
       memory_.Insert(frame_points_[i], *odom, frame->value.stamp_ns);
     }
@@ -45,6 +46,7 @@ void ControlWorker::TakeNewFrames(std::int64_t now_ns) {
 
 robotio::Pose2D ControlWorker::PoseOnPath(const Plan* plan, const robotio::Pose2D& pose,
                                           double dt_s) {
+  if (!config_.path_shift.enabled) return pose;
   std::vector<Eigen::Vector2d> seen_map;
   const auto odom = mediator_.odometry.Latest();
   if (plan != nullptr && plan->has_goal && odom) {

@@ -49,7 +49,6 @@ class ControlWorker {
   robotio::VelocityCommand Tick(std::int64_t now_ns, double dt_s);
   // m, map frame: the path shift in force (zero while nothing seen lately is near the path).
   [[nodiscard]] Eigen::Vector2d path_shift() const { return shift_.shift(); }
-  [[nodiscard]] const planning::ObstacleMemory& memory() const { return memory_; }
 
  private:
   [[nodiscard]] robotio::VelocityCommand Step(std::int64_t now_ns, double dt_s);
