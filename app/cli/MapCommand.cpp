@@ -377,6 +377,9 @@ void RunMap(const MapOptions& o) {
     report["static_kept_near_floor"] = a.static_kept_near_floor;
     report["static_accuracy_above_floor"] = a.static_accuracy_above_floor;
     report["evaluation_pixel_stride"] = o.eval_stride;
+    Check(robotio::WriteFileAtomically(
+        (out / "accuracy_errors.csv").string(),
+        mapping::MisclassifiedVoxelsCsv(accuracy.Misclassified(map.tree()))));
   }
   if (surface_samples) {
     const mapping::SurfaceAccuracy s =

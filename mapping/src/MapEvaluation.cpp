@@ -1,6 +1,7 @@
 #include "dynamap/mapping/MapEvaluation.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "dynamap/mapping/MapExport.hpp"
 
@@ -24,6 +25,12 @@ bool AnyNeighbour(const octomap::OcTreeKey& key, F&& f) {
     }
   }
   return false;
+}
+
+// A labelled point is kept when its voxel is occupied in the final static map.
+bool KeptInStaticMap(const DualOcTree& final_map, const octomap::point3d& centre) {
+  const DualOcTreeNode* node = final_map.search(centre);
+  return node != nullptr && final_map.IsStaticOccupied(*node);
 }
 
 }  // namespace
@@ -65,8 +72,7 @@ PointAccuracy PointAccuracyCounter::Evaluate(const DualOcTree& final_map) const 
   PointAccuracy result;
   for (const auto& [key, counts] : counts_) {
     const octomap::point3d centre = key_frame_.keyToCoord(key);
-    const DualOcTreeNode* node = final_map.search(centre);
-    const bool kept = node != nullptr && final_map.IsStaticOccupied(*node);
+    const bool kept = KeptInStaticMap(final_map, centre);
     result.static_points += counts.static_points;
     result.dynamic_points += counts.dynamic_points;
     if (kept) result.static_kept += counts.static_points;
@@ -91,6 +97,43 @@ PointAccuracy PointAccuracyCounter::Evaluate(const DualOcTree& final_map) const 
   result.dynamic_accuracy = Ratio(result.dynamic_removed, result.dynamic_points, 1.0);
   result.associated_accuracy = std::sqrt(result.static_accuracy * result.dynamic_accuracy);
   return result;
+}
+
+MisclassifiedVoxels PointAccuracyCounter::Misclassified(const DualOcTree& final_map) const {
+  MisclassifiedVoxels result;
+  for (const auto& [key, counts] : counts_) {
+    const octomap::point3d c = key_frame_.keyToCoord(key);
+    const bool kept = KeptInStaticMap(final_map, c);
+    const Eigen::Vector3f centre(c.x(), c.y(), c.z());
+    if (!kept && counts.static_points > 0) {
+      result.static_lost.push_back(centre);
+      result.static_lost_points.push_back(counts.static_points);
+    }
+    if (kept && counts.dynamic_points > 0) {
+      result.dynamic_kept.push_back(centre);
+      result.dynamic_kept_points.push_back(counts.dynamic_points);
+    }
+  }
+  return result;
+}
+
+std::string MisclassifiedVoxelsCsv(const MisclassifiedVoxels& misclassified) {
+  std::string text =
+      "# voxel centre (m, map frame), labelled points the final static map got wrong\n"
+      "x,y,z,static_points_lost,dynamic_points_kept\n";
+  char line[96];
+  const auto add = [&](const robotio::PointList& voxels, const std::vector<std::uint64_t>& points,
+                       bool static_lost) {
+    for (std::size_t i = 0; i < voxels.size(); ++i) {
+      std::snprintf(line, sizeof line, "%.3f,%.3f,%.3f,%llu,%llu\n", voxels[i].x(), voxels[i].y(),
+                    voxels[i].z(), static_cast<unsigned long long>(static_lost ? points[i] : 0),
+                    static_cast<unsigned long long>(static_lost ? 0 : points[i]));
+      text += line;
+    }
+  };
+  add(misclassified.static_lost, misclassified.static_lost_points, true);
+  add(misclassified.dynamic_kept, misclassified.dynamic_kept_points, false);
+  return text;
 }
 
 SurfaceAccuracy EvaluateStaticSurfaces(const DualOcTree& map,

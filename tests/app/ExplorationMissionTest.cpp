@@ -163,7 +163,8 @@ TEST(ExplorationMission, ExploresTheSmallOffice) {
   // It replans as it goes (every 0.5 s unless it is waiting for a turn to finish).
   EXPECT_GE(report->plans, static_cast<std::int64_t>(report->mission_time_s / 2.0));
   for (const char* file : {"map.ot", "static.bt", "dynamic.bt", "trajectory.tum", "groundtruth.tum",
-                           "map2d.png", "map2d.pgm", "map2d.yaml", "coverage.png", "report.json"}) {
+                           "map2d.png", "map2d.pgm", "map2d.yaml", "coverage.png", "accuracy.png",
+                           "accuracy_errors.csv", "report.json"}) {
     EXPECT_TRUE(fs::exists(out + "/" + file)) << file;
   }
 }

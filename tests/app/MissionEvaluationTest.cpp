@@ -122,5 +122,37 @@ TEST(SurfaceCoverage, PictureShowsSeenSurfacesGreenAndMissedOnesRed) {
   EXPECT_LT(missed[1], 100);
 }
 
+TEST(AccuracyPicture, ShowsLostStaticPointsBlueAndKeptDynamicPointsRed) {
+  auto world = robotio::sim::ParseWorld(kTwoRooms, "two_rooms.yaml");
+  ASSERT_TRUE(world) << world.error().message;
+  const TruthGrid truth = BuildTruthGrid(*world, Area(0.05), 0.3, 1.0, 0.0);
+  mapping::MisclassifiedVoxels wrong;
+  wrong.static_lost = {{0.5f, 0.95f, 0.5f}, {0.5f, 0.95f, 1.0f}};
+  wrong.static_lost_points = {400, 600};
+  wrong.dynamic_kept = {{3.5f, 0.5f, 0.02f}};
+  wrong.dynamic_kept_points = {3};
+  mapping::PointAccuracy accuracy;
+  accuracy.static_accuracy = 0.985;
+  accuracy.dynamic_accuracy = 0.97;
+  const std::string dir = test::ScratchDir();
+  ASSERT_TRUE(WriteAccuracyPicture(truth.reachable, wrong, accuracy, dir + "/accuracy.png"));
+  const cv::Mat image = cv::imread(dir + "/accuracy.png", cv::IMREAD_COLOR);
+  ASSERT_FALSE(image.empty());
+  const planning::GridMap& grid = truth.reachable;
+  const auto pixel = [&](float x, float y) {
+    const planning::GridIndex c = grid.CellAt(x, y);
+    return image.at<cv::Vec3b>(2 * (grid.height - 1 - c.y), 2 * c.x);  // BGR.
+  };
+  // A thousand lost points saturate; three kept ones show, fainter.
+  const cv::Vec3b lost = pixel(0.5f, 0.95f), kept = pixel(3.5f, 0.5f), clean = pixel(1.0f, 0.5f);
+  EXPECT_EQ(lost[0], 255);
+  EXPECT_LT(lost[2], 60);
+  EXPECT_GT(kept[2], 120);
+  EXPECT_LT(kept[2], 255);
+  EXPECT_LT(kept[0], 60);
+  EXPECT_EQ(clean[0], clean[2]);  // Untouched cells stay grey.
+
+}
+
 }  // namespace
 }  // namespace dynamap::app::runtime

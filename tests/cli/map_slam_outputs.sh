@@ -36,6 +36,16 @@ head -c 8 "$scratch/map/trajectory_error.png" | grep -q PNG || {
   echo "no trajectory_error.png" >&2; exit 1; }
 grep -q '"trajectory_error_plot": ".*trajectory_error.png"' "$scratch/map/report.json" || {
   echo "report.json does not name the plot" >&2; exit 1; }
+# The recording is labelled: where SA and DA were lost is listed voxel by voxel, and the
+# static points lost there add up to what static_accuracy leaves out.
+csv="$scratch/map/accuracy_errors.csv"
+sed -n 2p "$csv" | grep -q "^x,y,z,static_points_lost,dynamic_points_kept$" || {
+  echo "unexpected header in $csv" >&2; exit 1; }
+lost=$(tail -n +3 "$csv" | awk -F, '{ s += $4 } END { print s + 0 }')
+field() { sed -n "s/^ *\"$1\": \([0-9.e+-]*\),*$/\1/p" "$scratch/map/report.json"; }
+expected=$(awk -v n="$(field static_points)" -v sa="$(field static_accuracy)" \
+  'BEGIN { printf "%d", n * (1 - sa) + 0.5 }')
+[ "$lost" -eq "$expected" ] || { echo "$lost static points lost in $csv, report says $expected" >&2; exit 1; }
 
 # SLAM settings from a file, the registration fed ground truth as odometry.
 printf 'reference: previous\nmax_correction_per_rad: 0.1\nloop_closure: {enabled: false}\n' \

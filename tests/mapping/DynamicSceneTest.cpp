@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "SyntheticScene.hpp"
 #include "dynamap/mapping/DualMap.hpp"
@@ -246,6 +247,55 @@ TEST(DynamicSceneTest, StaticPointsInTheFloorLayerAreCountedApart) {
   EXPECT_EQ(accuracy.static_kept_near_floor, 1u);
   EXPECT_DOUBLE_EQ(accuracy.static_accuracy, 0.5);
   EXPECT_DOUBLE_EQ(accuracy.static_accuracy_above_floor, 0.0);
+}
+
+// Misclassified() says where SA was lost: the wall point's voxel, never mapped, with the
+// one point it stands for; the kept floor point is not listed.
+TEST(DynamicSceneTest, MisclassifiedVoxelsNameWhereStaticPointsWereLost) {
+  DualMap map{MappingConfig{}};
+  robotio::DepthRays floor;
+  floor.origin = Eigen::Vector3f(0.02f, 0.02f, 0.5f);
+  floor.ends = {Eigen::Vector3f(1.02f, 0.02f, 0.02f)};
+  floor.hit = {true};
+  map.InsertRays(floor);
+  robotio::DepthFrame depth;
+  depth.width = depth.height = 1;
+  depth.intrinsics.fx = depth.intrinsics.fy = 1.0;
+  depth.intrinsics.cx = depth.intrinsics.cy = 0.0;
+  depth.depth_mm = {1000};
+  robotio::LabelFrame labels;
+  labels.width = labels.height = 1;
+  labels.labels = {1};
+  robotio::KinectMount mount;
+  mount.T_base_kinect.linear() = robotio::BodyFromOptical();
+  PointAccuracyCounter counter(map.config().resolution_m, 4.0, 1);
+  for (const double z : {0.02, 1.02, 1.02}) {
+    mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, z);
+    counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
+  }
+  // A person's point in the floor voxel: kept with the floor.
+  labels.labels = {static_cast<std::uint16_t>(2 | robotio::LabelFrame::kDynamicBit)};
+  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, 0.02);
+  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
+
+  const MisclassifiedVoxels wrong = counter.Misclassified(map.tree());
+  ASSERT_EQ(wrong.static_lost.size(), 1u);
+  EXPECT_NEAR(wrong.static_lost[0].x(), 1.025, 1e-3);
+  EXPECT_NEAR(wrong.static_lost[0].z(), 1.025, 1e-3);
+  EXPECT_EQ(wrong.static_lost_points[0], 2u);
+  ASSERT_EQ(wrong.dynamic_kept.size(), 1u);
+  EXPECT_NEAR(wrong.dynamic_kept[0].z(), 0.025, 1e-3);
+  EXPECT_EQ(wrong.dynamic_kept_points[0], 1u);
+  // The same counts as the accuracy figures.
+  const PointAccuracy accuracy = counter.Evaluate(map.tree());
+  EXPECT_EQ(accuracy.static_points - accuracy.static_kept, 2u);
+  EXPECT_EQ(accuracy.dynamic_points - accuracy.dynamic_removed, 1u);
+
+  const std::string csv = MisclassifiedVoxelsCsv(wrong);
+  EXPECT_EQ(csv.substr(csv.find('\n') + 1),
+            "x,y,z,static_points_lost,dynamic_points_kept\n"
+            "1.025,0.025,1.025,2,0\n"
+            "1.025,0.025,0.025,0,1\n");
 }
 
 TEST(DynamicSceneTest, SurfacePrecisionAndCompletenessAgainstTrueSamples) {

@@ -214,6 +214,10 @@ robotio::Trajectory MappingWorker::Corrected(const robotio::Trajectory& estimate
 
 mapping::PointAccuracy MappingWorker::Accuracy() const { return accuracy_.Evaluate(map().tree()); }
 
+mapping::MisclassifiedVoxels MappingWorker::Misclassified() const {
+  return accuracy_.Misclassified(map().tree());
+}
+
 double MappingWorker::median_insert_ms() const { return Percentile(insert_ms_, 0.5); }
 double MappingWorker::p95_insert_ms() const { return Percentile(insert_ms_, 0.95); }
 

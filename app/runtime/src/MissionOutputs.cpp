@@ -1,5 +1,7 @@
 #include "dynamap/app/runtime/MissionOutputs.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -25,6 +27,36 @@ void DrawPath(cv::Mat& image, const planning::GridMap& grid,
     cv::line(image, Pixel(grid, path[i - 1].x, path[i - 1].y), Pixel(grid, path[i].x, path[i].y),
              colour, 1, cv::LINE_AA);
   }
+}
+
+// The projected map faded to a background: free light, unknown mid, the rest darker.
+cv::Mat FadedGrid(const planning::GridMap& grid) {
+  cv::Mat image(grid.height, grid.width, CV_8UC3);
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) {
+      const CellState state = grid.At({x, y});
+      const std::uint8_t v = state == CellState::kNavigable ? 250
+                             : state == CellState::kUnknown ? 215
+                                                            : 175;
+      image.at<cv::Vec3b>(grid.height - 1 - y, x) = {v, v, v};
+    }
+  }
+  return image;
+}
+
+// Saved at 2 px per cell with a 1 m scale bar and a caption beside it.
+robotio::Status WriteEnlargedWithScaleBar(const cv::Mat& image, const planning::GridMap& grid,
+                                          const std::string& caption, const std::string& file) {
+  constexpr int kScale = 2;
+  cv::Mat big;
+  cv::resize(image, big, cv::Size(), kScale, kScale, cv::INTER_NEAREST);
+  const int metre = static_cast<int>(kScale / grid.resolution_m);
+  cv::line(big, {10, big.rows - 12}, {10 + metre, big.rows - 12}, cv::Scalar(0, 0, 0), 3);
+  cv::putText(big, "1 m   " + caption, {14 + metre, big.rows - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
+              cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  return robotio::WriteFileAtomically(file, [&big](const std::string& path) {
+    return cv::imwrite(path, big);
+  });
 }
 
 }  // namespace
@@ -79,17 +111,7 @@ robotio::Status WriteMapPicture(const planning::GridMap& grid,
 robotio::Status WriteCoveragePicture(const planning::GridMap& grid,
                                      const SurfaceCoverageResult& coverage,
                                      const std::string& file) {
-  constexpr int kScale = 2;
-  cv::Mat image(grid.height, grid.width, CV_8UC3);
-  for (int y = 0; y < grid.height; ++y) {
-    for (int x = 0; x < grid.width; ++x) {
-      const CellState state = grid.At({x, y});
-      const std::uint8_t v = state == CellState::kNavigable ? 250
-                             : state == CellState::kUnknown ? 215
-                                                            : 175;
-      image.at<cv::Vec3b>(grid.height - 1 - y, x) = {v, v, v};
-    }
-  }
+  cv::Mat image = FadedGrid(grid);
   // Per cell: samples inspected and visible.
   std::vector<std::pair<int, int>> counts(grid.cells.size(), {0, 0});
   const auto add = [&](const robotio::PointList& samples, bool seen) {
@@ -113,18 +135,51 @@ robotio::Status WriteCoveragePicture(const planning::GridMap& grid,
           static_cast<std::uint8_t>(220 - 180 * share)};  // BGR: red → green.
     }
   }
-  cv::Mat big;
-  cv::resize(image, big, cv::Size(), kScale, kScale, cv::INTER_NEAREST);
-  const int metre = static_cast<int>(kScale / grid.resolution_m);
-  cv::line(big, {10, big.rows - 12}, {10 + metre, big.rows - 12}, cv::Scalar(0, 0, 0), 3);
-  const std::string caption =
-      "1 m   surfaces seen closely: " + std::to_string(static_cast<int>(100.0 * coverage.Fraction() + 0.5)) +
-      " % (green), missed red";
-  cv::putText(big, caption, {14 + metre, big.rows - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.45,
-              cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
-  return robotio::WriteFileAtomically(file, [&big](const std::string& path) {
-    return cv::imwrite(path, big);
-  });
+  return WriteEnlargedWithScaleBar(
+      image, grid,
+      "surfaces seen closely: " +
+          std::to_string(static_cast<int>(100.0 * coverage.Fraction() + 0.5)) +
+          " % (green), missed red",
+      file);
+}
+
+robotio::Status WriteAccuracyPicture(const planning::GridMap& grid,
+                                     const mapping::MisclassifiedVoxels& misclassified,
+                                     const mapping::PointAccuracy& accuracy,
+                                     const std::string& file) {
+  cv::Mat image = FadedGrid(grid);
+  // Per cell: labelled points the final static map got wrong, over all heights.
+  std::vector<std::uint64_t> lost(grid.cells.size(), 0), kept(grid.cells.size(), 0);
+  const auto add = [&](const robotio::PointList& voxels, const std::vector<std::uint64_t>& points,
+                       std::vector<std::uint64_t>& per_cell) {
+    for (std::size_t i = 0; i < voxels.size(); ++i) {
+      const planning::GridIndex c = grid.CellAt(voxels[i].x(), voxels[i].y());
+      if (grid.Contains(c)) per_cell[static_cast<std::size_t>(grid.Index(c))] += points[i];
+    }
+  };
+  add(misclassified.static_lost, misclassified.static_lost_points, lost);
+  add(misclassified.dynamic_kept, misclassified.dynamic_kept_points, kept);
+  // Colour strength grows with the logarithm of the count: one stray point shows faintly,
+  // a wall that was lost for hundreds of frames saturates.
+  const auto strength = [](std::uint64_t n) {
+    return std::min(1.0, std::log10(1.0 + static_cast<double>(n)) / 3.0);
+  };
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) {
+      const auto cell = static_cast<std::size_t>(grid.Index({x, y}));
+      if (lost[cell] == 0 && kept[cell] == 0) continue;
+      const double b = 0.5 + 0.5 * strength(lost[cell]);
+      const double r = 0.5 + 0.5 * strength(kept[cell]);
+      image.at<cv::Vec3b>(grid.height - 1 - y, x) = {
+          static_cast<std::uint8_t>(lost[cell] > 0 ? 255 * b : 40), 40,
+          static_cast<std::uint8_t>(kept[cell] > 0 ? 255 * r : 40)};
+    }
+  }
+  char caption[160];
+  std::snprintf(caption, sizeof caption,
+                "static points lost (blue): SA %.3f   dynamic points kept (red): DA %.3f",
+                accuracy.static_accuracy, accuracy.dynamic_accuracy);
+  return WriteEnlargedWithScaleBar(image, grid, caption, file);
 }
 
 robotio::Status WriteRosMap(const planning::GridMap& grid, const std::string& pgm,

@@ -452,13 +452,14 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
     r.odometry_ate_rmse_m = e->ate_m.rmse;
   }
   std::optional<SurfaceCoverageResult> coverage;  // Only against the simulator's truth.
+  std::optional<mapping::PointAccuracy> accuracy;
   if (world_) {
-    const mapping::PointAccuracy accuracy = mapping_->Accuracy();
-    r.static_accuracy = accuracy.static_accuracy;
-    r.dynamic_accuracy = accuracy.dynamic_accuracy;
-    r.associated_accuracy = accuracy.associated_accuracy;
-    r.dynamic_accuracy_above_floor = accuracy.dynamic_accuracy_above_floor;
-    r.static_accuracy_above_floor = accuracy.static_accuracy_above_floor;
+    accuracy = mapping_->Accuracy();
+    r.static_accuracy = accuracy->static_accuracy;
+    r.dynamic_accuracy = accuracy->dynamic_accuracy;
+    r.associated_accuracy = accuracy->associated_accuracy;
+    r.dynamic_accuracy_above_floor = accuracy->dynamic_accuracy_above_floor;
+    r.static_accuracy_above_floor = accuracy->static_accuracy_above_floor;
     const TruthGrid truth_grid =
         BuildTruthGrid(*world_, mapping_->grid(), footprint_radius_m_,
                        config_.planning.projection.robot_height_m, r.mission_time_s);
@@ -512,6 +513,15 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   if (coverage) {
     results.push_back(write("coverage.png", WriteCoveragePicture(mapping_->grid(), *coverage,
                                                                  out + "/coverage.png")));
+  }
+  if (accuracy) {
+    const mapping::MisclassifiedVoxels misclassified = mapping_->Misclassified();
+    results.push_back(write("accuracy.png", WriteAccuracyPicture(mapping_->grid(), misclassified,
+                                                                 *accuracy, out + "/accuracy.png")));
+    results.push_back(write("accuracy_errors.csv",
+                            robotio::WriteFileAtomically(
+                                out + "/accuracy_errors.csv",
+                                mapping::MisclassifiedVoxelsCsv(misclassified))));
   }
   if (recording_) r.files.push_back("recording");
   for (const auto& status : results) {

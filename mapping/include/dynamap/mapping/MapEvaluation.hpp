@@ -6,7 +6,9 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <unordered_map>
+#include <vector>
 
 #include <octomap/OcTreeKey.h>
 
@@ -40,6 +42,21 @@ struct PointAccuracy {
   double static_accuracy_above_floor = 0.0;
 };
 
+// Where the accuracy was lost: voxels holding labelled static points that the final
+// static map does not keep, and voxels holding labelled dynamic points that it does
+// (voxel centres in the map frame, with how many points each stands for).
+struct MisclassifiedVoxels {
+  robotio::PointList static_lost;
+  std::vector<std::uint64_t> static_lost_points;
+  robotio::PointList dynamic_kept;
+  std::vector<std::uint64_t> dynamic_kept_points;
+};
+
+// The voxels as CSV: a comment line, the header x,y,z,static_points_lost,
+// dynamic_points_kept, then one voxel per line (for a closer look at heights, or in a
+// point-cloud viewer).
+[[nodiscard]] std::string MisclassifiedVoxelsCsv(const MisclassifiedVoxels& misclassified);
+
 // Collects the labelled depth points of a run by voxel (so a long run needs memory per
 // voxel, not per point), then scores them against the final static map.
 class PointAccuracyCounter {
@@ -52,6 +69,7 @@ class PointAccuracyCounter {
            const robotio::KinectMount& mount, const Eigen::Isometry3d& T_map_base);
 
   [[nodiscard]] PointAccuracy Evaluate(const DualOcTree& final_map) const;
+  [[nodiscard]] MisclassifiedVoxels Misclassified(const DualOcTree& final_map) const;
 
  private:
   struct Counts {

@@ -49,6 +49,7 @@ class MappingWorker {
   // After Run() returned.
   [[nodiscard]] const mapping::DualMap& map() const { return slam_ ? slam_->map() : map_; }
   [[nodiscard]] mapping::PointAccuracy Accuracy() const;
+  [[nodiscard]] mapping::MisclassifiedVoxels Misclassified() const;
   [[nodiscard]] bool Inspected(const Eigen::Vector3f& p_map) const;  // Within one voxel.
   [[nodiscard]] const planning::GridMap& grid() const { return projector_.map(); }
   // After Run() returned: the closures not yet made (all of them, unless they were made

@@ -1,7 +1,7 @@
 // The files a mission leaves behind besides the 3D maps: the projected map as a picture
 // with the path taken and the last targets (map2d.png), as a ROS map_server map
-// (map2d.pgm + map2d.yaml), where surfaces were seen closely (coverage.png), and
-// report.json.
+// (map2d.pgm + map2d.yaml), where surfaces were seen closely (coverage.png), where the
+// static map's accuracy was lost (accuracy.png), and report.json.
 #pragma once
 
 #include <string>
@@ -9,6 +9,7 @@
 
 #include "dynamap/app/runtime/MissionEvaluation.hpp"
 #include "dynamap/app/runtime/MissionSnapshot.hpp"
+#include "dynamap/mapping/MapEvaluation.hpp"
 #include "dynamap/planning/GridMap.hpp"
 #include "dynamap/robotio/Expected.hpp"
 
@@ -27,6 +28,15 @@ namespace dynamap::app::runtime {
 // red none; 2 px per cell, north up.
 [[nodiscard]] robotio::Status WriteCoveragePicture(const planning::GridMap& grid,
                                                    const SurfaceCoverageResult& coverage,
+                                                   const std::string& file);
+
+// Where the static map's accuracy was lost (static_accuracy, dynamic_accuracy): the
+// projected map faded, and each cell holding labelled static points whose voxel the final
+// static map does not keep drawn blue, holding dynamic points it keeps red (purple both),
+// stronger the more points; 2 px per cell, north up.
+[[nodiscard]] robotio::Status WriteAccuracyPicture(const planning::GridMap& grid,
+                                                   const mapping::MisclassifiedVoxels& misclassified,
+                                                   const mapping::PointAccuracy& accuracy,
                                                    const std::string& file);
 
 // map_server format: PGM (free 254, occupied 0, unknown 205) and its YAML description.
