@@ -437,7 +437,8 @@ void RegisterMapCommand(CLI::App& app) {
       "map", "Integrate a recording into the dual static/dynamic 3D map with SLAM (or known) poses; "
              "writes map.ot, static/dynamic .bt/.ply/.pcd, topdown.png, trajectory.tum (and "
              "trajectory_before_loop_closure.tum), slam_scans.csv, "
-             "loop_closures.csv, trajectory_error.png (with ground truth) and report.json");
+             "loop_closures.csv, trajectory_error.png (with ground truth), accuracy_errors.csv "
+             "(with labels) and report.json");
   map->add_option("--log", options->log,
                   "Recording directory (dynamap's or a TUM RGB-D sequence), or an OpenNI2 .oni "
                   "file; without odometry the camera is tracked by registration alone")
