@@ -197,10 +197,8 @@ TEST(DynamicSceneTest, PointAccuracyScoresKeptStaticAndRemovedDynamicPoints) {
   EXPECT_DOUBLE_EQ(accuracy.associated_accuracy, 1.0);
 }
 
-// Two points of one label, seen by a one-pixel Kinect looking along map x from 1 m away,
-// against a map holding only the floor voxel at (1.02, 0.02, 0.02): one point in that
-// voxel, one at (1.02, 0.02, 1.02), never mapped.
-PointAccuracy FloorPointAndPointAboveIt(std::uint16_t label) {
+// A map holding only the floor voxel at (1.02, 0.02, 0.02).
+DualMap MapOfOneFloorVoxel() {
   DualMap map{MappingConfig{}};
   robotio::DepthRays floor;
   floor.origin = Eigen::Vector3f(0.02f, 0.02f, 0.5f);
@@ -208,6 +206,12 @@ PointAccuracy FloorPointAndPointAboveIt(std::uint16_t label) {
   floor.hit = {true};
   map.InsertRays(floor);
   EXPECT_TRUE(map.IsStaticOccupied({1.02f, 0.02f, 0.02f}));
+  return map;
+}
+
+// One point of `label` at (1.02, 0.02, z), seen by a one-pixel Kinect looking along map x
+// from 1 m away.
+void AddPointAtHeight(PointAccuracyCounter& counter, std::uint16_t label, double z) {
   robotio::DepthFrame depth;
   depth.width = depth.height = 1;
   depth.intrinsics.fx = depth.intrinsics.fy = 1.0;
@@ -218,11 +222,16 @@ PointAccuracy FloorPointAndPointAboveIt(std::uint16_t label) {
   labels.labels = {label};
   robotio::KinectMount mount;
   mount.T_base_kinect.linear() = robotio::BodyFromOptical();  // Looking along map x.
+  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, z);
+  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
+}
+
+// Two points of one label against that map: one in the floor voxel, one at
+// (1.02, 0.02, 1.02), never mapped.
+PointAccuracy FloorPointAndPointAboveIt(std::uint16_t label) {
+  const DualMap map = MapOfOneFloorVoxel();
   PointAccuracyCounter counter(map.config().resolution_m, 4.0, 1);
-  for (const double z : {0.02, 1.02}) {
-    mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, z);
-    counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
-  }
+  for (const double z : {0.02, 1.02}) AddPointAtHeight(counter, label, z);
   return counter.Evaluate(map.tree());
 }
 
@@ -252,31 +261,12 @@ TEST(DynamicSceneTest, StaticPointsInTheFloorLayerAreCountedApart) {
 // Misclassified() says where SA was lost: the wall point's voxel, never mapped, with the
 // one point it stands for; the kept floor point is not listed.
 TEST(DynamicSceneTest, MisclassifiedVoxelsNameWhereStaticPointsWereLost) {
-  DualMap map{MappingConfig{}};
-  robotio::DepthRays floor;
-  floor.origin = Eigen::Vector3f(0.02f, 0.02f, 0.5f);
-  floor.ends = {Eigen::Vector3f(1.02f, 0.02f, 0.02f)};
-  floor.hit = {true};
-  map.InsertRays(floor);
-  robotio::DepthFrame depth;
-  depth.width = depth.height = 1;
-  depth.intrinsics.fx = depth.intrinsics.fy = 1.0;
-  depth.intrinsics.cx = depth.intrinsics.cy = 0.0;
-  depth.depth_mm = {1000};
-  robotio::LabelFrame labels;
-  labels.width = labels.height = 1;
-  labels.labels = {1};
-  robotio::KinectMount mount;
-  mount.T_base_kinect.linear() = robotio::BodyFromOptical();
+  const DualMap map = MapOfOneFloorVoxel();
   PointAccuracyCounter counter(map.config().resolution_m, 4.0, 1);
-  for (const double z : {0.02, 1.02, 1.02}) {
-    mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, z);
-    counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
-  }
+  for (const double z : {0.02, 1.02, 1.02}) AddPointAtHeight(counter, 1, z);
   // A person's point in the floor voxel: kept with the floor.
-  labels.labels = {static_cast<std::uint16_t>(2 | robotio::LabelFrame::kDynamicBit)};
-  mount.T_base_kinect.translation() = Eigen::Vector3d(0.02, 0.02, 0.02);
-  counter.Add(depth, labels, mount, Eigen::Isometry3d::Identity());
+  AddPointAtHeight(counter, static_cast<std::uint16_t>(2 | robotio::LabelFrame::kDynamicBit),
+                   0.02);
 
   const MisclassifiedVoxels wrong = counter.Misclassified(map.tree());
   ASSERT_EQ(wrong.static_lost.size(), 1u);
