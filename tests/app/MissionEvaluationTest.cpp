@@ -129,8 +129,8 @@ TEST(AccuracyPicture, ShowsLostStaticPointsBlueAndKeptDynamicPointsRed) {
   mapping::MisclassifiedVoxels wrong;
   wrong.static_lost = {{0.5f, 0.95f, 0.5f}, {0.5f, 0.95f, 1.0f}};
   wrong.static_lost_points = {400, 600};
-  wrong.dynamic_kept = {{3.5f, 0.5f, 0.02f}};
-  wrong.dynamic_kept_points = {3};
+  wrong.dynamic_kept = {{3.5f, 0.5f, 0.02f}, {4.5f, 0.5f, 0.02f}};
+  wrong.dynamic_kept_points = {3, 3000};
   mapping::PointAccuracy accuracy;
   accuracy.static_accuracy = 0.985;
   accuracy.dynamic_accuracy = 0.97;
@@ -143,12 +143,14 @@ TEST(AccuracyPicture, ShowsLostStaticPointsBlueAndKeptDynamicPointsRed) {
     const planning::GridIndex c = grid.CellAt(x, y);
     return image.at<cv::Vec3b>(2 * (grid.height - 1 - c.y), 2 * c.x);  // BGR.
   };
-  // A thousand lost points saturate; three kept ones show, fainter.
-  const cv::Vec3b lost = pixel(0.5f, 0.95f), kept = pixel(3.5f, 0.5f), clean = pixel(1.0f, 0.5f);
+  // The worst cell of each colour is full; three kept points beside 3000 show, fainter.
+  const cv::Vec3b lost = pixel(0.5f, 0.95f), kept = pixel(3.5f, 0.5f), most_kept = pixel(4.5f, 0.5f),
+                  clean = pixel(1.0f, 0.5f);
   EXPECT_EQ(lost[0], 255);
   EXPECT_LT(lost[2], 60);
+  EXPECT_EQ(most_kept[2], 255);
   EXPECT_GT(kept[2], 120);
-  EXPECT_LT(kept[2], 255);
+  EXPECT_LT(kept[2], 160);
   EXPECT_LT(kept[0], 60);
   EXPECT_EQ(clean[0], clean[2]);  // Untouched cells stay grey.
 

@@ -1,5 +1,6 @@
 #include "dynamap/app/runtime/MissionOutputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -159,17 +160,19 @@ robotio::Status WriteAccuracyPicture(const planning::GridMap& grid,
   };
   add(misclassified.static_lost, misclassified.static_lost_points, lost);
   add(misclassified.dynamic_kept, misclassified.dynamic_kept_points, kept);
-  // Colour strength grows with the logarithm of the count: one stray point shows faintly,
-  // a wall that was lost for hundreds of frames saturates.
-  const auto strength = [](std::uint64_t n) {
-    return std::min(1.0, std::log10(1.0 + static_cast<double>(n)) / 3.0);
+  // Colour strength grows with the logarithm of the count, full in the worst cell of each
+  // kind: one stray point shows faintly, the place that lost the most stands out.
+  const auto strength = [](std::uint64_t n, std::uint64_t most) {
+    return most == 0 ? 0.0 : std::log1p(static_cast<double>(n)) / std::log1p(static_cast<double>(most));
   };
+  const std::uint64_t most_lost = *std::max_element(lost.begin(), lost.end());
+  const std::uint64_t most_kept = *std::max_element(kept.begin(), kept.end());
   for (int y = 0; y < grid.height; ++y) {
     for (int x = 0; x < grid.width; ++x) {
       const auto cell = static_cast<std::size_t>(grid.Index({x, y}));
       if (lost[cell] == 0 && kept[cell] == 0) continue;
-      const double b = 0.5 + 0.5 * strength(lost[cell]);
-      const double r = 0.5 + 0.5 * strength(kept[cell]);
+      const double b = 0.4 + 0.6 * strength(lost[cell], most_lost);
+      const double r = 0.4 + 0.6 * strength(kept[cell], most_kept);
       image.at<cv::Vec3b>(grid.height - 1 - y, x) = {
           static_cast<std::uint8_t>(lost[cell] > 0 ? 255 * b : 40), 40,
           static_cast<std::uint8_t>(kept[cell] > 0 ? 255 * r : 40)};

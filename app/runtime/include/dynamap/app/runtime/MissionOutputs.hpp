@@ -33,7 +33,8 @@ namespace dynamap::app::runtime {
 // Where the static map's accuracy was lost (static_accuracy, dynamic_accuracy): the
 // projected map faded, and each cell holding labelled static points whose voxel the final
 // static map does not keep drawn blue, holding dynamic points it keeps red (purple both),
-// stronger the more points; 2 px per cell, north up.
+// stronger the more points (logarithmic, full in the worst cell of each colour); 2 px per
+// cell, north up.
 [[nodiscard]] robotio::Status WriteAccuracyPicture(const planning::GridMap& grid,
                                                    const mapping::MisclassifiedVoxels& misclassified,
                                                    const mapping::PointAccuracy& accuracy,
