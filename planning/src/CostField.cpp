@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <functional>
 #include <opencv2/imgproc.hpp>
 
@@ -62,6 +63,43 @@ TraversalGrid BuildTraversalGrid(const GridMap& map, const CostFieldConfig& conf
     }
   }
   return grid;
+}
+
+void FreeWayOut(TraversalGrid& grid, const GridMap& map, GridIndex robot,
+                const CostFieldConfig& config) {
+  if (!grid.Contains(robot) || !grid.Blocked(robot) || grid.width != map.width ||
+      grid.height != map.height) {
+    return;
+  }
+  const cv::Mat to_obstacle = DistanceTo(
+      map, [](CellState s) { return s == CellState::kObstacle || s == CellState::kHole; });
+  const cv::Mat to_hole = DistanceTo(map, [](CellState s) { return s == CellState::kHole; });
+  const auto distance = [](const cv::Mat& d, GridIndex c) { return d.at<float>(c.y, c.x); };
+  const float robot_to_obstacle = distance(to_obstacle, robot);
+  const float robot_to_hole = distance(to_hole, robot);
+  const double reach_cells = (config.robot_radius_m + config.hole_margin_m) / map.resolution_m;
+  std::vector<bool> visited(grid.penalty.size(), false);
+  std::vector<GridIndex> open = {robot};
+  visited[static_cast<std::size_t>(grid.Index(robot))] = true;
+  while (!open.empty()) {
+    const GridIndex c = open.back();
+    open.pop_back();
+    grid.penalty[grid.Index(c)] = kStandingCellPenalty;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const GridIndex n{c.x + dx, c.y + dy};
+        if (!grid.Contains(n) || !grid.Blocked(n)) continue;
+        const auto index = static_cast<std::size_t>(grid.Index(n));
+        if (visited[index] || map.At(n) != CellState::kNavigable ||
+            std::hypot(n.x - robot.x, n.y - robot.y) > reach_cells ||
+            distance(to_obstacle, n) < robot_to_obstacle || distance(to_hole, n) < robot_to_hole) {
+          continue;
+        }
+        visited[index] = true;
+        open.push_back(n);
+      }
+    }
+  }
 }
 
 double Clearance(const TraversalGrid& grid, GridIndex cell, const CostFieldConfig& config) {

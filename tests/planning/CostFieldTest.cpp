@@ -71,5 +71,57 @@ TEST(BuildTraversalGrid, AStairPitIsKeptFurtherAwayThanAWall) {
   EXPECT_TRUE(passable_across(BuildTraversalGrid(map, config), 50));
 }
 
+// A 3 x 3 m pit at x, y >= 1.5 m on a 4.5 m floor, and the robot 0.40 m west of its edge
+// (within the 0.56 m the margin keeps): as a pit's edge seen late leaves it.
+GridMap PitCorner() {
+  GridMap map(90, 90, kRes, CellState::kNavigable);
+  for (int y = 30; y < 90; ++y) {
+    for (int x = 30; x < 90; ++x) map.Set({x, y}, CellState::kHole);
+  }
+  return map;
+}
+
+TEST(FreeWayOut, ARobotInsideAPitsMarginGetsAWayOutThatNeverNearsThePit) {
+  const GridMap map = PitCorner();
+  const CostFieldConfig config;
+  const GridIndex robot{22, 50};  // 0.40 m from the pit's west edge (cell 30).
+  TraversalGrid grid = BuildTraversalGrid(map, config);
+  ASSERT_TRUE(grid.Blocked(robot));
+  TraversalGrid standing = grid;
+  FreeStandingCell(standing, robot);
+  EXPECT_FALSE(AStarSearch(standing, robot, {5, 50}).found);  // Walled in: the old way.
+
+  FreeWayOut(grid, map, robot, config);
+  const GridPath path = AStarSearch(grid, robot, {5, 50});
+  ASSERT_TRUE(path.found);
+  for (const GridIndex& c : path.cells) EXPECT_LE(c.x, robot.x) << c.x << ", " << c.y;
+  // Nothing nearer the pit than the robot opened, nor farther than the margin's reach.
+  EXPECT_TRUE(grid.Blocked(GridIndex{23, 50}));
+  EXPECT_TRUE(grid.Blocked(GridIndex{22, 30}));  // Beside the pit's corner, not joined.
+  EXPECT_FALSE(grid.Blocked(GridIndex{21, 50}));
+  EXPECT_EQ(grid.penalty[grid.Index({21, 50})], kStandingCellPenalty);
+}
+
+TEST(FreeWayOut, NoWallCellOpensAndAPassableRobotChangesNothing) {
+  const GridMap map = Doorway();  // A wall along y = 40.
+  const CostFieldConfig config;
+  const GridIndex robot{20, 37};  // 0.15 m from the wall.
+  TraversalGrid grid = BuildTraversalGrid(map, config);
+  FreeWayOut(grid, map, robot, config);
+  EXPECT_TRUE(AStarSearch(grid, robot, {20, 10}).found);
+  for (int x = 0; x < 80; ++x) {
+    if (x < 31 || x >= 49) {
+      EXPECT_TRUE(grid.Blocked(GridIndex{x, 40})) << x;
+    }
+    if (x < 25) {
+      EXPECT_TRUE(grid.Blocked(GridIndex{x, 38})) << x;  // Nearer the wall than the robot.
+    }
+  }
+  const TraversalGrid before = BuildTraversalGrid(map, config);
+  TraversalGrid free_robot = before;
+  FreeWayOut(free_robot, map, {20, 10}, config);
+  EXPECT_TRUE(DiffGrids(before, free_robot).empty());
+}
+
 }  // namespace
 }  // namespace dynamap::planning

@@ -70,7 +70,7 @@ void PlanningWorker::PlanOnce(double now_s) {
   const planning::GridIndex robot = grid.CellAt(pose.x, pose.y);
   const planning::GridIndex home = grid.CellAt(0.0, 0.0);
   if (!grid.Contains(robot)) return;
-  planning::FreeStandingCell(traversal, robot);
+  planning::FreeWayOut(traversal, grid, robot, config_.planning.cost);
   // People are neither surfaces to inspect nor walls hiding what lies behind them: a
   // person's trace made inspection targets of its own (only the paths go round them).
   const std::vector<int>& dynamic_obstacles = projected->value->dynamic_obstacles;
@@ -184,7 +184,7 @@ void PlanningWorker::PlanOnce(double now_s) {
     std::optional<planning::TraversalGrid> passable;
     if (!dynamic_obstacles.empty()) {
       passable = BuildTraversalGrid(without_people, config_.planning.cost);
-      planning::FreeStandingCell(*passable, robot);
+      planning::FreeWayOut(*passable, without_people, robot, config_.planning.cost);
     }
     const planning::BlockedWayVerdict blocked = blocked_.Judge(
         passable ? &*passable : nullptr, robot, goal_, grid.resolution_m, now_s);

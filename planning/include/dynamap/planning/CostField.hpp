@@ -43,6 +43,16 @@ struct CostFieldConfig {
 [[nodiscard]] double Clearance(const TraversalGrid& grid, GridIndex cell,
                                const CostFieldConfig& config);
 
+// A robot that stands where the grid is blocked (a pit's edge seen late widens the margin
+// kept from it over the robot, a wall drawn nearer) must still have a way out, or nothing
+// is reachable and it stands there for good. The blocked cells around it that are floor
+// and no nearer to an obstacle or hole than the robot itself, within the inflation
+// radius (robot radius + hole margin) and joined to it through such cells, become passable
+// with kStandingCellPenalty: paths leave by the shortest way and never closer to what
+// blocked them. Nothing changes when the robot's cell is passable or off the grid.
+void FreeWayOut(TraversalGrid& grid, const GridMap& map, GridIndex robot,
+                const CostFieldConfig& config);
+
 // Every passable cell penalty 0, the rest blocked (Moving AI maps, tests).
 [[nodiscard]] TraversalGrid TraversalFromPassable(int width, int height,
                                                   const std::vector<bool>& passable);
