@@ -153,7 +153,6 @@ TEST(AccuracyPicture, ShowsLostStaticPointsBlueAndKeptDynamicPointsRed) {
   EXPECT_LT(kept[2], 160);
   EXPECT_LT(kept[0], 60);
   EXPECT_EQ(clean[0], clean[2]);  // Untouched cells stay grey.
-
 }
 
 }  // namespace

@@ -97,7 +97,7 @@ TEST(FreeWayOut, ARobotInsideAPitsMarginGetsAWayOutThatNeverNearsThePit) {
   for (const GridIndex& c : path.cells) EXPECT_LE(c.x, robot.x) << c.x << ", " << c.y;
   // Nothing nearer the pit than the robot opened, nor farther than the margin's reach.
   EXPECT_TRUE(grid.Blocked(GridIndex{23, 50}));
-  EXPECT_TRUE(grid.Blocked(GridIndex{22, 30}));  // Beside the pit's corner, not joined.
+  EXPECT_TRUE(grid.Blocked(GridIndex{22, 30}));  // Beside the pit's corner, 1 m away.
   EXPECT_FALSE(grid.Blocked(GridIndex{21, 50}));
   EXPECT_EQ(grid.penalty[grid.Index({21, 50})], kStandingCellPenalty);
 }
