@@ -3,6 +3,7 @@
 #include <octomap/octomap_utils.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace dynamap::mapping {
 
@@ -59,8 +60,16 @@ robotio::DepthRays DualMap::RaysOf(const robotio::DepthFrame& frame,
                                    const Eigen::Isometry3d& T_map_base) const {
   robotio::KinectMount limited = mount;
   limited.max_range_m = std::min(mount.max_range_m, config_.max_range_m);
-  return robotio::DepthToRays(frame, limited, T_map_base, 1,
-                              config_.edge_clearance_voxels * config_.resolution_m);
+  robotio::EdgeClearance edges;
+  edges.lateral_m = config_.edge_clearance_voxels * config_.resolution_m;
+  // The gap reach in pixels of this image (the angle at its focal length).
+  edges.grazing_gap_px = static_cast<int>(std::lround(
+      std::tan(config_.grazing_gap_deg * M_PI / 180.0) *
+      std::min(frame.intrinsics.fx, frame.intrinsics.fy)));
+  // The floor layers (floor_plane) seed no gaps: far off, the floor is grazing everywhere.
+  if (config_.floor_plane) edges.gap_min_height_m = config_.resolution_m;
+  edges.side_depth_m = config_.unseen_side_depth_m;
+  return robotio::DepthToRays(frame, limited, T_map_base, 1, edges);
 }
 
 ScanStatistics DualMap::InsertDepthFrame(const robotio::DepthFrame& frame,

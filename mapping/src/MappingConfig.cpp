@@ -27,6 +27,8 @@ MappingConfig ParseMappingConfig(robotio::ConfigNode& node) {
   node.Read("surface_band", &config.surface_band);
   node.Read("floor_plane", &config.floor_plane);
   node.Read("edge_clearance_voxels", &config.edge_clearance_voxels, 0.0, 20.0);
+  node.Read("grazing_gap_deg", &config.grazing_gap_deg, 0.0, 30.0);
+  node.Read("unseen_side_depth_m", &config.unseen_side_depth_m, 0.0, 20.0);
   node.Read("persistence_observations", &config.persistence_observations, 0, 1000000);
   node.Read("voxel_filter_m", &config.voxel_filter_m, 0.005, 2.0);
   node.Read("insert_threads", &config.insert_threads, 1, 64);

@@ -99,7 +99,8 @@ float IncidenceCos(const DepthFrame& frame, int u, int v, const Eigen::Vector3f&
 }  // namespace
 
 DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
-                      const Eigen::Isometry3d& T_target_base, int stride, double alongside_m) {
+                      const Eigen::Isometry3d& T_target_base, int stride,
+                      const EdgeClearance& edges) {
   const Intrinsics& k = frame.intrinsics;
   const Eigen::Isometry3f T = (T_target_base * mount.T_base_kinect).cast<float>();
   DepthRays rays;
@@ -107,8 +108,36 @@ DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
   const auto min_mm = static_cast<std::uint16_t>(std::max(1.0, mount.min_range_m * 1000.0));
   const double max_mm = mount.max_range_m * 1000.0;
   const float max_z = static_cast<float>(mount.max_range_m);
+  const auto direction_of = [&k](int u, int v) {
+    return Eigen::Vector3f(static_cast<float>((u - k.cx) / k.fx),
+                           static_cast<float>((v - k.cy) / k.fy), 1.0f);
+  };
+  // Incidence of every measured pixel; a ray cut at max range carries the incidence of the
+  // surface it measured beyond. The gaps beside grazing pixels need every pixel's.
+  const bool fill_gaps = edges.lateral_m > 0.0 && edges.grazing_gap_px > 0;
+  const int step = fill_gaps ? 1 : stride;
+  std::vector<float> incidence(frame.depth_mm.size(), 0.0f);
+  // What FillGrazingGaps reads: the incidence of the pixels that may seed a gap, those at
+  // least gap_min_height_m high; the others count as head-on.
+  const auto gap_min_height = static_cast<float>(edges.gap_min_height_m);
+  std::vector<float> seed_incidence(fill_gaps ? frame.depth_mm.size() : 0, 1.0f);
+  for (int v = 0; v < frame.height; v += step) {
+    for (int u = 0; u < frame.width; u += step) {
+      const std::uint16_t d = frame.At(u, v);
+      if (d < min_mm) continue;
+      const Eigen::Vector3f p = direction_of(u, v) * (static_cast<float>(d) * 0.001f);
+      const std::size_t i = static_cast<std::size_t>(v * frame.width + u);
+      incidence[i] = IncidenceCos(frame, u, v, p, min_mm, d <= max_mm ? max_mm : kAnyRangeMm);
+      if (fill_gaps && (T * p).z() >= gap_min_height) seed_incidence[i] = incidence[i];
+    }
+  }
   const std::vector<float> alongside =
-      alongside_m > 0.0 ? NearestDepthAlongside(frame, alongside_m, min_mm) : std::vector<float>{};
+      edges.lateral_m <= 0.0
+          ? std::vector<float>{}
+          : NearestDepthAlongside(
+                fill_gaps ? FillGrazingGaps(frame, seed_incidence, edges.grazing_gap_px, min_mm)
+                          : frame,
+                edges.lateral_m, min_mm, edges.side_depth_m);
   const std::size_t most = static_cast<std::size_t>((frame.width + stride - 1) / stride) *
                           static_cast<std::size_t>((frame.height + stride - 1) / stride);
   rays.ends.reserve(most);
@@ -121,8 +150,7 @@ DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
       const std::uint16_t d = frame.At(u, v);
       if (d < min_mm) continue;
       const bool hit = d <= max_mm;
-      const Eigen::Vector3f direction(static_cast<float>((u - k.cx) / k.fx),
-                                      static_cast<float>((v - k.cy) / k.fy), 1.0f);
+      const Eigen::Vector3f direction = direction_of(u, v);
       // Beyond max range: free space up to the max-range depth, no endpoint. The cut is at
       // the same depth as the farthest hit, so every voxel a hit can reach is one a longer
       // ray sees free (a cut at that range along the ray left a shell beside the image axis
@@ -131,9 +159,7 @@ DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
       const float z = hit ? measured_z : max_z;
       rays.ends.push_back(T * (direction * z));
       rays.hit.push_back(hit);
-      // A cut ray carries the incidence and range of the surface it measured beyond.
-      rays.incidence_cos.push_back(IncidenceCos(frame, u, v, direction * measured_z, min_mm,
-                                                hit ? max_mm : kAnyRangeMm));
+      rays.incidence_cos.push_back(incidence[v * frame.width + u]);
       rays.surface_range_m.push_back(measured_z * direction.norm());
       if (!alongside.empty()) {
         rays.alongside_range_m.push_back(alongside[v * frame.width + u] * direction.norm());

@@ -7,28 +7,48 @@
 namespace dynamap::mapping::testing {
 namespace {
 
-float HitBox(const Box& box, const Eigen::Vector3f& o, const Eigen::Vector3f& d) {
+// Ray parameter of the surface hit and the axis of that surface's normal.
+struct Hit {
+  float t = std::numeric_limits<float>::max();
+  int normal_axis = 0;
+};
+
+Hit HitBox(const Box& box, const Eigen::Vector3f& o, const Eigen::Vector3f& d) {
   float t_near = 0.0f, t_far = std::numeric_limits<float>::max();
+  int near_axis = 0;
   for (int a = 0; a < 3; ++a) {
     if (std::abs(d[a]) < 1e-9f) {
-      if (o[a] < box.min[a] || o[a] > box.max[a]) return std::numeric_limits<float>::max();
+      if (o[a] < box.min[a] || o[a] > box.max[a]) return {};
       continue;
     }
     float t0 = (box.min[a] - o[a]) / d[a], t1 = (box.max[a] - o[a]) / d[a];
     if (t0 > t1) std::swap(t0, t1);
-    t_near = std::max(t_near, t0);
+    if (t0 > t_near) {
+      t_near = t0;
+      near_axis = a;
+    }
     t_far = std::min(t_far, t1);
   }
-  return t_near <= t_far && t_near > 0.0f ? t_near : std::numeric_limits<float>::max();
+  if (t_near <= t_far && t_near > 0.0f) return {t_near, near_axis};
+  return {};
 }
 
-// Ray parameter of the nearest surface along o + t d, max() when none.
+// The nearest surface along o + t d, t = max() when none.
+Hit NearestHit(const SyntheticScene& scene, const Eigen::Vector3f& o, const Eigen::Vector3f& d) {
+  Hit nearest;
+  if (d.x() > 1e-6f) nearest = {(scene.wall_x - o.x()) / d.x(), 0};
+  if (d.z() < -1e-6f && (scene.floor_z - o.z()) / d.z() < nearest.t) {
+    nearest = {(scene.floor_z - o.z()) / d.z(), 2};
+  }
+  for (const Box& box : scene.boxes) {
+    const Hit hit = HitBox(box, o, d);
+    if (hit.t < nearest.t) nearest = hit;
+  }
+  return nearest;
+}
+
 float Nearest(const SyntheticScene& scene, const Eigen::Vector3f& o, const Eigen::Vector3f& d) {
-  float t = std::numeric_limits<float>::max();
-  if (d.x() > 1e-6f) t = std::min(t, (scene.wall_x - o.x()) / d.x());
-  if (d.z() < -1e-6f) t = std::min(t, (scene.floor_z - o.z()) / d.z());
-  for (const Box& box : scene.boxes) t = std::min(t, HitBox(box, o, d));
-  return t;
+  return NearestHit(scene, o, d).t;
 }
 
 }  // namespace
@@ -49,7 +69,9 @@ robotio::DepthFrame RenderDepth(const SyntheticScene& scene, const Eigen::Vector
       const Eigen::Vector3f d =
           R * Eigen::Vector3f(static_cast<float>((u - intrinsics.cx) / intrinsics.fx),
                               static_cast<float>((v - intrinsics.cy) / intrinsics.fy), 1.0f);
-      const float t = Nearest(scene, origin, d);
+      const Hit hit = NearestHit(scene, origin, d);
+      const float t = hit.t;
+      if (std::abs(d[hit.normal_axis]) < scene.drop_below_incidence_cos * d.norm()) continue;
       if (t < 60.0f) {
         frame.depth_mm[v * frame.width + u] = static_cast<std::uint16_t>(std::lround(t * 1000.0f));
       }

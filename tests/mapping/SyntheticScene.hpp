@@ -21,6 +21,9 @@ struct SyntheticScene {
   float wall_x = 3.0f;     // Wall plane x = wall_x (m).
   float floor_z = -0.5f;   // Floor plane z = floor_z (m).
   std::vector<Box> boxes;  // People / furniture.
+  // RenderDepth gives no depth where |cos| of the incidence is below this, as the Kinect
+  // drops pixels that see a surface at grazing incidence (about 0.26, 75 deg); 0 = never.
+  float drop_below_incidence_cos = 0.0f;
 };
 
 // Rays from `origin` over yaw [-30, 30] and pitch [-25, 20] degrees at `step_deg`; each

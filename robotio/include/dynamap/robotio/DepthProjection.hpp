@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <limits>
 #include <vector>
 
 #include "dynamap/robotio/DepthFrame.hpp"
@@ -39,12 +40,25 @@ struct DepthRays {
   // farther for a ray cut at max range (its surface lies beyond). Empty with incidence_cos.
   std::vector<float> surface_range_m;
   // Per ray, m from the origin to where the ray comes within `alongside_m` of the nearest
-  // surface measured beside it, its own included (NearestDepthAlongside, along the ray).
-  // Empty when DepthToRays was given no `alongside_m`.
+  // surface measured (or assumed, EdgeClearance) beside it, its own included
+  // (NearestDepthAlongside, along the ray). Empty without EdgeClearance::lateral_m.
   std::vector<float> alongside_range_m;
 };
+
+// What DepthToRays looks for beside each ray (DepthEdges.hpp); all off by default.
+struct EdgeClearance {
+  double lateral_m = 0.0;  // NearestDepthAlongside's distance; 0 = no alongside_range_m.
+  int grazing_gap_px = 0;  // FillGrazingGaps's reach; 0 = gaps stay gaps.
+  // Only grazing pixels whose point lies at least this high in the target frame fill gaps
+  // (the floor seen far off is grazing too, and has its own rule in the map).
+  double gap_min_height_m = -std::numeric_limits<double>::infinity();
+  // Beside the image's left and right edges, a surface as near as this (m) may lie unseen
+  // (NearestDepthAlongside's side_depth_m); 0 = nothing is assumed there.
+  double side_depth_m = 0.0;
+};
+
 [[nodiscard]] DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
                                     const Eigen::Isometry3d& T_target_base, int stride = 1,
-                                    double alongside_m = 0.0);
+                                    const EdgeClearance& edges = {});
 
 }  // namespace dynamap::robotio
