@@ -80,12 +80,9 @@ TEST(DynamicSceneTest, WithoutTheEdgeClearanceRaysAlongAThinLeafSendItToTheDynam
 }
 
 // A wall ending at a doorway (x = 2.6), its face (y = 0.41) 1 cm into the voxel layer
-// [0.40, 0.45): first seen face-on, then from the corridor 0.6 m off its plane, looking past
-// its end. From there the face beyond 2.24 m is seen at more than 75 deg and the camera
-// drops it; the rays past the end run through the layer's air beside the last metre.
-DualMap FaceOnThenAlongTheWall(double grazing_gap_deg) {
-  MappingConfig config;
-  config.grazing_gap_deg = grazing_gap_deg;
+// [0.40, 0.45): first seen face-on, then from the corridor 0.6 m off its plane looking
+// along `yaw`. The camera drops what it sees at more than 75 deg.
+DualMap FaceOnThenFromTheCorridor(const MappingConfig& config, float yaw) {
   DualMap map{config};
   testing::SyntheticScene scene;
   scene.wall_x = 6.0f;
@@ -95,16 +92,23 @@ DualMap FaceOnThenAlongTheWall(double grazing_gap_deg) {
   const robotio::KinectMount mount = testing::LevelMount(k);
   const Eigen::Vector3f facing(2.2f, 1.6f, 0.3f);
   const Eigen::Vector3f corridor(0.0f, 1.01f, 0.3f);
-  const float past_the_end = std::atan2(0.41f - 1.01f, 2.6f);
   for (int scan = 0; scan < 10; ++scan) {
     map.InsertDepthFrame(testing::RenderDepth(scene, facing, -1.5708f, k), mount,
                          testing::BasePose(facing, -1.5708f));
   }
   for (int scan = 0; scan < 20; ++scan) {
-    map.InsertDepthFrame(testing::RenderDepth(scene, corridor, past_the_end, k), mount,
-                         testing::BasePose(corridor, past_the_end));
+    map.InsertDepthFrame(testing::RenderDepth(scene, corridor, yaw, k), mount,
+                         testing::BasePose(corridor, yaw));
   }
   return map;
+}
+
+// Looking past the wall's end: the face beyond 2.24 m is seen at more than 75 deg, and the
+// rays past the end run through the layer's air beside the last metre.
+DualMap FaceOnThenAlongTheWall(double grazing_gap_deg) {
+  MappingConfig config;
+  config.grazing_gap_deg = grazing_gap_deg;
+  return FaceOnThenFromTheCorridor(config, std::atan2(0.41f - 1.01f, 2.6f));
 }
 
 TEST(DynamicSceneTest, AWallFaceSeenAlongFromACorridorStaysStatic) {
@@ -124,34 +128,16 @@ TEST(DynamicSceneTest, WithoutFillingGrazingGapsTheRaysPastTheWallEndClearItsFac
   EXPECT_GE(cleared, 2);
 }
 
-// The same wall, then seen from the corridor turned so that its end lies just outside the
-// image's right edge: the rays along that edge pass the end through the layer's air with
-// nothing measured beside them.
+// Turned so that the wall's end lies just outside the image's right edge: the rays along
+// that edge (12.75 deg right of x; the end is at 13.0 deg) pass the end through the
+// layer's air with nothing measured beside them.
 DualMap FaceOnThenPastTheEndBesideTheView(double unseen_side_depth_m) {
   MappingConfig config;
   config.unseen_side_depth_m = unseen_side_depth_m;
-  DualMap map{config};
-  testing::SyntheticScene scene;
-  scene.wall_x = 6.0f;
-  scene.drop_below_incidence_cos = 0.26f;
-  scene.boxes = {{{0.5f, 0.29f, -0.5f}, {2.6f, 0.41f, 2.0f}}};
   const robotio::Intrinsics k = robotio::Intrinsics{}.Scaled(160, 120);
-  const robotio::KinectMount mount = testing::LevelMount(k);
-  const Eigen::Vector3f facing(2.2f, 1.6f, 0.3f);
-  const Eigen::Vector3f corridor(0.0f, 1.01f, 0.3f);
-  // The right edge's rays at 12.75 deg right of x; the wall's end is at 13.0 deg.
   const float half_view = std::atan2(static_cast<float>(k.width - 1 - k.cx),
                                      static_cast<float>(k.fx));
-  const float yaw = half_view - 12.75f * 3.14159265f / 180.0f;
-  for (int scan = 0; scan < 10; ++scan) {
-    map.InsertDepthFrame(testing::RenderDepth(scene, facing, -1.5708f, k), mount,
-                         testing::BasePose(facing, -1.5708f));
-  }
-  for (int scan = 0; scan < 20; ++scan) {
-    map.InsertDepthFrame(testing::RenderDepth(scene, corridor, yaw, k), mount,
-                         testing::BasePose(corridor, yaw));
-  }
-  return map;
+  return FaceOnThenFromTheCorridor(config, half_view - 12.75f * 3.14159265f / 180.0f);
 }
 
 TEST(DynamicSceneTest, AWallEndJustBesideTheViewStaysStaticWithASurfaceAssumedThere) {
