@@ -131,13 +131,16 @@ DepthRays DepthToRays(const DepthFrame& frame, const KinectMount& mount,
       if (fill_gaps && (T * p).z() >= gap_min_height) seed_incidence[i] = incidence[i];
     }
   }
-  const std::vector<float> alongside =
-      edges.lateral_m <= 0.0
-          ? std::vector<float>{}
-          : NearestDepthAlongside(
-                fill_gaps ? FillGrazingGaps(frame, seed_incidence, edges.grazing_gap_px, min_mm)
-                          : frame,
-                edges.lateral_m, min_mm, edges.side_depth_m);
+  std::vector<float> alongside;
+  if (edges.lateral_m > 0.0) {
+    // Only a filled image is a copy; otherwise the frame is read as it is.
+    const std::optional<DepthFrame> filled =
+        fill_gaps ? std::optional<DepthFrame>(
+                        FillGrazingGaps(frame, seed_incidence, edges.grazing_gap_px, min_mm))
+                  : std::nullopt;
+    alongside = NearestDepthAlongside(filled ? *filled : frame, edges.lateral_m, min_mm,
+                                      edges.side_depth_m);
+  }
   const std::size_t most = static_cast<std::size_t>((frame.width + stride - 1) / stride) *
                           static_cast<std::size_t>((frame.height + stride - 1) / stride);
   rays.ends.reserve(most);
