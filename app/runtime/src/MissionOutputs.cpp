@@ -165,8 +165,10 @@ robotio::Status WriteAccuracyPicture(const planning::GridMap& grid,
   const auto strength = [](std::uint64_t n, std::uint64_t most) {
     return most == 0 ? 0.0 : std::log1p(static_cast<double>(n)) / std::log1p(static_cast<double>(most));
   };
-  const std::uint64_t most_lost = *std::max_element(lost.begin(), lost.end());
-  const std::uint64_t most_kept = *std::max_element(kept.begin(), kept.end());
+  const auto most = [](const std::vector<std::uint64_t>& per_cell) {
+    return per_cell.empty() ? std::uint64_t{0} : *std::max_element(per_cell.begin(), per_cell.end());
+  };
+  const std::uint64_t most_lost = most(lost), most_kept = most(kept);
   for (int y = 0; y < grid.height; ++y) {
     for (int x = 0; x < grid.width; ++x) {
       const auto cell = static_cast<std::size_t>(grid.Index({x, y}));
