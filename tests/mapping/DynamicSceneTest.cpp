@@ -151,6 +151,47 @@ TEST(DynamicSceneTest, ByDefaultNothingIsAssumedBesideTheViewAndTheEdgeRaysClear
   EXPECT_FALSE(map.IsStaticOccupied({2.575f, 0.42f, 0.32f}));
 }
 
+// A camera 0.3 m above the floor (z = 0) facing a wall 1.5 m away: from 15 deg below the
+// horizon down the floor is seen at more than 75 deg and dropped, a gap of 9 rows above the
+// wall's foot. Returns, for the ray of the wall's lowest measured pixel in the middle
+// column, the range where it passes the nearest surface beside it over its own range.
+float AlongsideOfTheWallsFootOverItsRange(bool floor_plane) {
+  MappingConfig config;
+  config.floor_plane = floor_plane;
+  const DualMap map{config};
+  testing::SyntheticScene scene;
+  scene.wall_x = 1.5f;
+  scene.floor_z = 0.0f;
+  scene.drop_below_incidence_cos = 0.26f;
+  const robotio::Intrinsics k = robotio::Intrinsics{}.Scaled(160, 120);
+  const Eigen::Vector3f camera(0.0f, 0.0f, 0.3f);
+  const robotio::DepthFrame frame = testing::RenderDepth(scene, camera, 0.0f, k);
+  const robotio::DepthRays rays =
+      map.RaysOf(frame, testing::LevelMount(k), testing::BasePose(camera, 0.0f));
+  // Image rows grow downwards: the wall's foot is the last wall row before the gap.
+  const auto wall_depth = static_cast<std::uint16_t>(1500);
+  int foot = -1;
+  for (int v = 0; v < frame.height; ++v) {
+    if (frame.At(80, v) == wall_depth) foot = v;
+  }
+  EXPECT_GT(foot, 0);
+  EXPECT_EQ(frame.At(80, foot + 1), 0);  // The gap.
+  std::size_t i = 0;  // The foot pixel's index among the measured pixels.
+  for (int v = 0; v < foot; ++v) {
+    for (int u = 0; u < frame.width; ++u) i += frame.At(u, v) >= 300 ? 1 : 0;
+  }
+  for (int u = 0; u < 80; ++u) i += frame.At(u, foot) >= 300 ? 1 : 0;
+  return rays.alongside_range_m[i] / (rays.ends[i] - rays.origin).norm();
+}
+
+TEST(DynamicSceneTest, TheFarFloorsGapFillsNothingWithTheFloorPlane) {
+  // With the floor plane the floor's grazing pixels seed no gap: the wall's foot has
+  // nothing nearer beside it. Without it the gap takes the floor's last measured depth
+  // (about 1.1 m) and the foot's ray stops there.
+  EXPECT_NEAR(AlongsideOfTheWallsFootOverItsRange(true), 1.0f, 0.01f);
+  EXPECT_LT(AlongsideOfTheWallsFootOverItsRange(false), 0.85f);
+}
+
 // A person stands 3.87 m deep, 25 degrees beside the camera's axis (4.27 m along the ray),
 // then walks off; the wall behind lies beyond the 4 m max range.
 DualMap PersonAtTheEdgeOfRangeWalksOff() {
