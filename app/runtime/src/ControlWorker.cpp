@@ -122,7 +122,7 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
   const robotio::Pose2D on_path = PoseOnPath(plan ? &plan->value : nullptr, pose, dt_s);
   if (now_ns < recovery_until_ns_) {
     // Backing off goes where no Kinect looks: the map says what is behind.
-    return HoldAtKnownObstacles(plan ? plan->value.map : nullptr, pose, on_path,
+    return HoldAtKnownObstacles(plan ? &plan->value : nullptr, pose, on_path,
                                 {now_ns, recovery_.v, recovery_.omega});
   }
 
@@ -158,24 +158,32 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
   if (!std::isfinite(clearance)) clearance = config_.guard.footprint_radius_m;
   planning::FollowerOutput out = follower_.Step(on_path, clearance, dt_s);
   out.command.stamp_ns = now_ns;
-  return HoldAtKnownObstacles(plan->value.map, pose, on_path, out.command);
+  return HoldAtKnownObstacles(&plan->value, pose, on_path, out.command);
 }
 
-robotio::VelocityCommand ControlWorker::HoldAtKnownObstacles(
-    const std::shared_ptr<const planning::GridMap>& map, const robotio::Pose2D& pose,
-    const robotio::Pose2D& on_path, robotio::VelocityCommand command) {
+robotio::VelocityCommand ControlWorker::HoldAtKnownObstacles(const Plan* plan,
+                                                             const robotio::Pose2D& pose,
+                                                             const robotio::Pose2D& on_path,
+                                                             robotio::VelocityCommand command) {
+  if (plan == nullptr || !plan->map) return command;
+  const planning::GridMap& map = *plan->map;
   // The Kinects see nothing within 0.5 m, beside or behind the base, and no floor within
   // robotio::FloorBlindRadius (1.25 m for the shipped rig): door posts passing out of view
   // and a stair pit's edge are checked on the map instead. With the path shifted, SLAM's
   // pose and the shifted one must both run into the map's obstacle: the shift exists
   // because one of them is off the map by up to that much, and holding whenever either
   // did left the base standing for good in a doorway it had been shifted into.
+  // A squeezed path counts on the half cell by which an obstacle cell's centre may lie
+  // beyond the surface (a doorway mapped a cell narrower a side); measured with the full
+  // footprint, the guard held the base at the doorway it was planned through, for good
+  // (office seed 2 stood 650 s in front of N2's door, docs/RESULTS.md).
+  const double footprint =
+      config_.guard.footprint_radius_m - (plan->squeezed ? 0.5 * map.resolution_m : 0.0);
   const auto drives_in = [&](const robotio::Pose2D& p) {
-    return planning::DrivesIntoKnownObstacle(*map, p, command, config_.guard.footprint_radius_m,
-                                             config_.map_guard_s);
+    return planning::DrivesIntoKnownObstacle(map, p, command, footprint, config_.map_guard_s);
   };
   const bool shifted = pose.x != on_path.x || pose.y != on_path.y;
-  if (map && drives_in(pose) && (!shifted || drives_in(on_path))) {
+  if (drives_in(pose) && (!shifted || drives_in(on_path))) {
     command.v = 0.0;
     ++mediator_.counters.map_guard_stops;
   }

@@ -204,6 +204,7 @@ void PlanningWorker::PlanOnce(double now_s) {
       ++mediator_.counters.squeezed_plans;
       path = squeeze->path;
       path_grid = &squeeze->grid;
+      plan.squeezed = true;
     } else {
       spdlog::debug("t {:.1f} s: no path from ({}, {}) to ({}, {})", now_s, robot.x, robot.y,
                     goal_.x, goal_.y);

@@ -59,12 +59,14 @@ class ControlWorker {
   // `plan` may be null (no plan yet: no shift).
   [[nodiscard]] robotio::Pose2D PoseOnPath(const Plan* plan, const robotio::Pose2D& pose,
                                            double dt_s);
-  // `command` with v = 0 when it would drive the footprint into a known obstacle of `map`
-  // (planning::DrivesIntoKnownObstacle) both from SLAM's `pose` and from `on_path` (the
-  // same when the path is not shifted); counted in map_guard_stops.
-  [[nodiscard]] robotio::VelocityCommand HoldAtKnownObstacles(
-      const std::shared_ptr<const planning::GridMap>& map, const robotio::Pose2D& pose,
-      const robotio::Pose2D& on_path, robotio::VelocityCommand command);
+  // `command` with v = 0 when it would drive the footprint into a known obstacle of the
+  // plan's map (planning::DrivesIntoKnownObstacle) both from SLAM's `pose` and from
+  // `on_path` (the same when the path is not shifted); counted in map_guard_stops. The
+  // footprint is the guard's, half a cell less on a squeezed path (Plan::squeezed).
+  [[nodiscard]] robotio::VelocityCommand HoldAtKnownObstacles(const Plan* plan,
+                                                              const robotio::Pose2D& pose,
+                                                              const robotio::Pose2D& on_path,
+                                                              robotio::VelocityCommand command);
 
   Mediator& mediator_;
   robotio::Rig rig_;

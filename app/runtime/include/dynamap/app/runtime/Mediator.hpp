@@ -50,6 +50,9 @@ struct Plan {
   Eigen::Vector2d goal_map = Eigen::Vector2d::Zero();     // m, map frame.
   std::vector<Eigen::Vector2d> path_map;                  // Shortened waypoints, m.
   std::optional<Eigen::Vector2d> look_at_map;             // What to face at the goal, m.
+  // The path keeps only the squeeze radius from the map's obstacle cells
+  // (planning::FindSqueezePath): the map guard measures with it as well.
+  bool squeezed = false;
   std::vector<Eigen::Vector2d> frontier_targets_map;      // Candidate viewpoints, m.
   double plan_ms = 0.0;                                   // Wall time of this plan.
   std::shared_ptr<const planning::GridMap> map;           // Grid the plan was made on.
