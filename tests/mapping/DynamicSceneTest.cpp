@@ -12,6 +12,18 @@
 namespace dynamap::mapping {
 namespace {
 
+// `scans` frames of the (still) `scene` inserted from a level 160 x 120 camera at
+// `position`, looking along `yaw`: rendered once, inserted that many times.
+void LookFrom(DualMap& map, const testing::SyntheticScene& scene, const Eigen::Vector3f& position,
+              float yaw, int scans) {
+  const robotio::Intrinsics k = robotio::Intrinsics{}.Scaled(160, 120);
+  const robotio::KinectMount mount = testing::LevelMount(k);
+  const robotio::DepthFrame frame = testing::RenderDepth(scene, position, yaw, k);
+  for (int scan = 0; scan < scans; ++scan) {
+    map.InsertDepthFrame(frame, mount, testing::BasePose(position, yaw));
+  }
+}
+
 // The robot watches a wall; after a few empty scans a person walks across and stops.
 DualMap WalkThrough(UpdateMode mode) {
   MappingConfig config;
@@ -49,18 +61,8 @@ DualMap EdgeOnThenFaceOn(double edge_clearance_voxels) {
   DualMap map{config};
   testing::SyntheticScene scene;
   scene.boxes = {{{1.0f, 0.32f, -0.5f}, {2.0f, 0.36f, 1.0f}}};
-  const robotio::Intrinsics k = robotio::Intrinsics{}.Scaled(160, 120);
-  const robotio::KinectMount mount = testing::LevelMount(k);
-  const Eigen::Vector3f in_plane(0.0f, 0.34f, 0.3f);
-  const Eigen::Vector3f beside(0.2f, 1.3f, 0.3f);
-  for (int scan = 0; scan < 10; ++scan) {
-    map.InsertDepthFrame(testing::RenderDepth(scene, in_plane, 0.0f, k), mount,
-                         testing::BasePose(in_plane, 0.0f));
-  }
-  for (int scan = 0; scan < 10; ++scan) {
-    map.InsertDepthFrame(testing::RenderDepth(scene, beside, -0.6f, k), mount,
-                         testing::BasePose(beside, -0.6f));
-  }
+  LookFrom(map, scene, {0.0f, 0.34f, 0.3f}, 0.0f, 10);   // In the leaf's plane.
+  LookFrom(map, scene, {0.2f, 1.3f, 0.3f}, -0.6f, 10);   // Beside it.
   return map;
 }
 
@@ -88,18 +90,8 @@ DualMap FaceOnThenFromTheCorridor(const MappingConfig& config, float yaw) {
   scene.wall_x = 6.0f;
   scene.drop_below_incidence_cos = 0.26f;
   scene.boxes = {{{0.5f, 0.29f, -0.5f}, {2.6f, 0.41f, 2.0f}}};
-  const robotio::Intrinsics k = robotio::Intrinsics{}.Scaled(160, 120);
-  const robotio::KinectMount mount = testing::LevelMount(k);
-  const Eigen::Vector3f facing(2.2f, 1.6f, 0.3f);
-  const Eigen::Vector3f corridor(0.0f, 1.01f, 0.3f);
-  for (int scan = 0; scan < 10; ++scan) {
-    map.InsertDepthFrame(testing::RenderDepth(scene, facing, -1.5708f, k), mount,
-                         testing::BasePose(facing, -1.5708f));
-  }
-  for (int scan = 0; scan < 20; ++scan) {
-    map.InsertDepthFrame(testing::RenderDepth(scene, corridor, yaw, k), mount,
-                         testing::BasePose(corridor, yaw));
-  }
+  LookFrom(map, scene, {2.2f, 1.6f, 0.3f}, -1.5708f, 10);  // Facing the wall.
+  LookFrom(map, scene, {0.0f, 1.01f, 0.3f}, yaw, 20);      // From the corridor.
   return map;
 }
 
@@ -199,18 +191,10 @@ DualMap PersonAtTheEdgeOfRangeWalksOff() {
   testing::SyntheticScene scene;
   scene.wall_x = 8.0f;
   scene.boxes = {{{3.87f, 1.6f, -0.5f}, {4.15f, 1.95f, 1.2f}}};
-  const robotio::Intrinsics k = robotio::Intrinsics{}.Scaled(160, 120);
-  const robotio::KinectMount mount = testing::LevelMount(k);
   const Eigen::Vector3f origin(0.0f, 0.0f, 0.3f);
-  for (int scan = 0; scan < 5; ++scan) {
-    map.InsertDepthFrame(testing::RenderDepth(scene, origin, 0.0f, k), mount,
-                         testing::BasePose(origin, 0.0f));
-  }
+  LookFrom(map, scene, origin, 0.0f, 5);
   scene.boxes.clear();
-  for (int scan = 0; scan < 20; ++scan) {
-    map.InsertDepthFrame(testing::RenderDepth(scene, origin, 0.0f, k), mount,
-                         testing::BasePose(origin, 0.0f));
-  }
+  LookFrom(map, scene, origin, 0.0f, 20);
   return map;
 }
 
