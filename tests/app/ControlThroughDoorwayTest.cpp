@@ -152,7 +152,7 @@ TEST(ControlThroughDoorway, OnASqueezedPathTheMapGuardAllowsTheSqueezeRadius) {
   // north one and 0.36 m from the south one: no cell left at the full radius (0.36 m),
   // so the planner squeezes (0.335 m). With the full footprint the map guard holds the
   // base as it nears the north post's cell (here it turns a little while held and gets
-  // through; office seed 2, held with nothing to turn, stood 650 s in front of N2's door).
+  // through; office seed 2, held with nothing to turn, stood 660 s in front of N2's door).
   // Measured with the squeeze's footprint, nothing holds it, and the real 0.9 m is passed.
   const Passage full = DriveThroughTheDoorway(false, 0.9, 0.0, 0.035, 0.1, 0.15, false);
   EXPECT_GT(full.map_guard_stops, 0);

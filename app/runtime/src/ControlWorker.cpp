@@ -176,7 +176,7 @@ robotio::VelocityCommand ControlWorker::HoldAtKnownObstacles(const Plan* plan,
   // A squeezed path counts on the half cell by which an obstacle cell's centre may lie
   // beyond the surface (a doorway mapped a cell narrower a side); measured with the full
   // footprint, the guard held the base at the doorway it was planned through, for good
-  // (office seed 2 stood 650 s in front of N2's door, docs/RESULTS.md).
+  // (office seed 2 stood 660 s in front of N2's door, docs/RESULTS.md).
   const double footprint =
       config_.guard.footprint_radius_m - (plan->squeezed ? 0.5 * map.resolution_m : 0.0);
   const auto drives_in = [&](const robotio::Pose2D& p) {
