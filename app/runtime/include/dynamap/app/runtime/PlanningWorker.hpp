@@ -40,12 +40,14 @@ class PlanningWorker {
   PlanningWorker(Mediator& mediator, PlanningWorkerConfig config);
 
   void Run();  // Thread body: until the mission stops.
+  // One plan at mission time `now_s` on the mediator's newest grid and pose, published as
+  // its plan (Run calls it every replan period).
+  void PlanOnce(double now_s);
 
   [[nodiscard]] const std::vector<double>& plan_ms() const { return plan_ms_; }
   [[nodiscard]] const planning::SurfaceCoverage& coverage() const { return coverage_; }
 
  private:
-  void PlanOnce(double now_s);
   // m, the robot this near a viewpoint has reached it: there it looks, and a viewpoint this
   // near is not chosen again (twice the follower's goal tolerance plus a cell).
   [[nodiscard]] double ArrivedM() const;
