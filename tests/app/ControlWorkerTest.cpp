@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <vector>
 
+#include "dynamap/planning/GridMap.hpp"
 #include "dynamap/robotio/Time.hpp"
 
 namespace dynamap::app::runtime {
@@ -124,6 +126,64 @@ TEST(ControlWorker, CruisesAtTheSpeedItsGridClearanceAllowsInTheOpen) {
   }
   EXPECT_NEAR(top_speed, expected, 1e-6);
   EXPECT_GT(top_speed, 0.7);
+}
+
+TEST(ControlWorker, AMapGuardHoldThatLastsReportsTheWayAheadBlocked) {
+  // The plan runs 3 m east through a wall the map has at 1.0-1.1 m (nothing is there for
+  // the Kinects; the path was planned through it). The map guard holds the base short of
+  // it; once it has held for map_guard_give_up_s the planner gets the way ahead blocked,
+  // and again after as long if nothing changes.
+  Mediator mediator(0.0, {});
+  ControlWorkerConfig config;
+  config.initial_still_s = 0.0;
+  config.initial_turn_rad = 0.0;
+  ControlWorker control(mediator, robotio::Rig{}, config);
+  auto map = std::make_shared<planning::GridMap>(200, 80, 0.05, planning::CellState::kNavigable);
+  map->origin_x_m = -1.0;
+  map->origin_y_m = -2.0;
+  for (int y = 0; y < map->height; ++y) {
+    for (const int x : {40, 41}) map->Set({x, y}, planning::CellState::kObstacle);
+  }
+  Plan plan;
+  plan.has_goal = true;
+  plan.goal_map = {3.0, 0.0};
+  plan.path_map = {{0.0, 0.0}, {3.0, 0.0}};
+  plan.map = map;
+  mediator.plan.Set(plan);
+  robotio::Pose2D pose;
+  double first_held_s = -1.0;
+  double first_report_s = -1.0;
+  std::vector<Eigen::Vector2d> reported;
+  robotio::Pose2D reported_at;
+  for (int i = 0; i < 400 && mediator.counters.map_guard_give_ups.load() < 2; ++i) {
+    const double t = i * kDt;
+    mediator.pose_fix.Set({robotio::SecondsToNanos(t), pose, pose});
+    const robotio::VelocityCommand c = control.Tick(robotio::SecondsToNanos(t), kDt);
+    pose.x += c.v * kDt;
+    if (first_held_s < 0.0 && mediator.counters.map_guard_stops.load() > 0) first_held_s = t;
+    std::vector<Eigen::Vector2d> obstacles = mediator.TakeObstacles();
+    if (!obstacles.empty() && first_report_s < 0.0) {
+      first_report_s = t;
+      reported = obstacles;
+      reported_at = pose;
+    }
+  }
+  EXPECT_LT(pose.x + config.guard.footprint_radius_m, 1.0) << "drove into the mapped wall";
+  EXPECT_GT(reported_at.x, 0.2);  // It drove up to the wall first.
+  ASSERT_GE(first_held_s, 0.0);
+  ASSERT_GE(first_report_s, 0.0) << "a hold of " << 400 * kDt << " s was never reported";
+  // Not before the hold had lasted its time; not long after (the base creeps up to the
+  // wall for a moment before standing).
+  EXPECT_GE(first_report_s - first_held_s, config.map_guard_give_up_s - kDt);
+  EXPECT_LT(first_report_s - first_held_s, config.map_guard_give_up_s + 3.0);
+  // The obstacle stands on the footprint's front edge, between the base and the wall.
+  ASSERT_FALSE(reported.empty());
+  for (const Eigen::Vector2d& p : reported) {
+    EXPECT_GT(p.x(), reported_at.x + 0.2);
+    EXPECT_NEAR((p - Eigen::Vector2d(reported_at.x, reported_at.y)).norm(),
+                config.guard.footprint_radius_m, 0.05);
+  }
+  EXPECT_EQ(mediator.counters.map_guard_give_ups.load(), 2);  // Held on: reported again.
 }
 
 }  // namespace

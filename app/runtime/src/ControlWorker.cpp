@@ -158,7 +158,35 @@ robotio::VelocityCommand ControlWorker::Step(std::int64_t now_ns, double dt_s) {
   if (!std::isfinite(clearance)) clearance = config_.guard.footprint_radius_m;
   planning::FollowerOutput out = follower_.Step(on_path, clearance, dt_s);
   out.command.stamp_ns = now_ns;
-  return HoldAtKnownObstacles(&plan->value, pose, on_path, out.command);
+  const robotio::VelocityCommand held =
+      HoldAtKnownObstacles(&plan->value, pose, on_path, out.command);
+  return GiveUpALongHold(pose, out.command, held, dt_s);
+}
+
+robotio::VelocityCommand ControlWorker::GiveUpALongHold(const robotio::Pose2D& pose,
+                                                        const robotio::VelocityCommand& wanted,
+                                                        robotio::VelocityCommand command,
+                                                        double dt_s) {
+  if (command.v != 0.0) {
+    map_guard_held_s_ = 0.0;  // Driving: whatever held it before is behind.
+    return command;
+  }
+  if (wanted.v == 0.0) return command;  // Turning in place or at rest: nothing held.
+  map_guard_held_s_ += dt_s;
+  if (map_guard_held_s_ < config_.map_guard_give_up_s) return command;
+  // The plan runs into the map where the guard will not let the base go, and nothing the
+  // follower does changes that: the planner gets the way ahead blocked, as after a stall,
+  // and plans another way or another target.
+  map_guard_held_s_ = 0.0;
+  ++mediator_.counters.map_guard_give_ups;
+  spdlog::debug("t {:.2f} s: the map guard held the base at ({:.2f}, {:.2f}) for {:.1f} s: "
+                "the way ahead is reported blocked", robotio::NanosToSeconds(command.stamp_ns),
+                pose.x, pose.y, config_.map_guard_give_up_s);
+  const double direction = wanted.v < 0.0 ? -1.0 : 1.0;
+  mediator_.ReportObstacles(
+      planning::StallObstacle(pose, config_.guard.footprint_radius_m, direction));
+  follower_.Stop();
+  return {command.stamp_ns, 0.0, 0.0};
 }
 
 robotio::VelocityCommand ControlWorker::HoldAtKnownObstacles(const Plan* plan,

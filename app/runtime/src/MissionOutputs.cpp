@@ -238,6 +238,7 @@ robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra
       {"loop_closures", r.loop_closures},
       {"guard_stops", r.guard_stops},
       {"map_guard_stops", r.map_guard_stops},
+      {"map_guard_give_ups", r.map_guard_give_ups},
       {"stall_stops", r.stall_stops},
       {"path_shifted_s", r.path_shifted_s},
       {"path_shift_max_m", r.path_shift_max_m},

@@ -415,6 +415,7 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   r.registrations_rejected = m.counters.registrations_rejected.load();
   r.guard_stops = m.counters.guard_stops.load();
   r.map_guard_stops = m.counters.map_guard_stops.load();
+  r.map_guard_give_ups = m.counters.map_guard_give_ups.load();
   r.stall_stops = m.counters.stall_stops.load();
   r.path_shifted_s = static_cast<double>(m.counters.path_shift_steps.load()) /
                      config_.control_rate_hz;

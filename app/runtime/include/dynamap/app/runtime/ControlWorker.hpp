@@ -32,6 +32,9 @@ struct ControlWorkerConfig {
   double stall_backoff_s = 2.0;           // s backing away (at the guard's back-off speed)
                                           // from what a stalled base pressed against.
   double map_guard_s = 0.5;               // s ahead the map guard checks the footprint.
+  // s the map guard may hold back a base the follower drives before the way ahead is
+  // reported to the planner as blocked (StallObstacle, as for a stall).
+  double map_guard_give_up_s = 5.0;
   planning::PathFollowerConfig follower;
   planning::CollisionGuardConfig guard;
   planning::StallDetectorConfig stall;
@@ -68,6 +71,15 @@ class ControlWorker {
                                                               const robotio::Pose2D& on_path,
                                                               robotio::VelocityCommand command);
 
+  // `command` (HoldAtKnownObstacles' verdict on the follower's `wanted`), or a stop when
+  // the map guard has now held the base for map_guard_give_up_s of steps that wanted to
+  // drive: the way ahead then goes to the planner as blocked (counted in
+  // map_guard_give_ups). Steps that drive start the count afresh.
+  [[nodiscard]] robotio::VelocityCommand GiveUpALongHold(const robotio::Pose2D& pose,
+                                                         const robotio::VelocityCommand& wanted,
+                                                         robotio::VelocityCommand command,
+                                                         double dt_s);
+
   Mediator& mediator_;
   robotio::Rig rig_;
   ControlWorkerConfig config_;
@@ -81,6 +93,7 @@ class ControlWorker {
   robotio::VelocityCommand last_;
   std::int64_t recovery_until_ns_ = -1;
   robotio::VelocityCommand recovery_;
+  double map_guard_held_s_ = 0.0;  // s the map guard has held the base since it last drove.
   double turned_rad_ = 0.0;
   std::int64_t start_ns_ = -1;  // First control step.
 };

@@ -72,6 +72,8 @@ struct MissionCounters {
   std::atomic<std::int64_t> collisions{0};
   std::atomic<std::int64_t> guard_stops{0};
   std::atomic<std::int64_t> map_guard_stops{0};  // Control steps the map guard held back.
+  // Times the map guard held the base so long that the way ahead went to the planner.
+  std::atomic<std::int64_t> map_guard_give_ups{0};
   // Control steps driven with the path shifted more than 2 cm off what was seen lately
   // (planning::PathShift), and the largest shift (mm).
   std::atomic<std::int64_t> path_shift_steps{0};

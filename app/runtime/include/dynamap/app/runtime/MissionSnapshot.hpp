@@ -69,6 +69,7 @@ struct MissionReport {
   std::int64_t loop_closures = 0;  // Revisits closed and kept in the pose graph.
   std::int64_t guard_stops = 0;
   std::int64_t map_guard_stops = 0;  // Control steps the map guard held the base.
+  std::int64_t map_guard_give_ups = 0;  // Holds long enough to report the way blocked.
   std::int64_t stall_stops = 0;      // Times the base stalled against something unseen.
   double path_shifted_s = 0.0;       // s driven with the path shifted > 2 cm (PathShift).
   double path_shift_max_m = 0.0;     // m, the largest path shift.
