@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "dynamap/planning/GridMap.hpp"
@@ -15,24 +16,42 @@ namespace {
 
 constexpr double kDt = 0.05;  // 20 Hz.
 
+// The default control without the start's standing still and look around.
+ControlWorkerConfig WithoutTheStart() {
+  ControlWorkerConfig config;
+  config.initial_still_s = 0.0;
+  config.initial_turn_rad = 0.0;
+  return config;
+}
+
+// A navigable 10 x 4 m grid at 5 cm, the map frame's origin 1 m from its west edge on its
+// middle line.
+std::shared_ptr<planning::GridMap> FreeGrid() {
+  auto map = std::make_shared<planning::GridMap>(200, 80, 0.05, planning::CellState::kNavigable);
+  map->origin_x_m = -1.0;
+  map->origin_y_m = -2.0;
+  return map;
+}
+
+// A plan from the origin straight east to (`length_m`, 0), made on `map` (null: no grid,
+// so no map guard).
+Plan StraightPlan(double length_m, std::shared_ptr<const planning::GridMap> map) {
+  Plan plan;
+  plan.has_goal = true;
+  plan.goal_map = {length_m, 0.0};
+  plan.path_map = {{0.0, 0.0}, {length_m, 0.0}};
+  plan.map = std::move(map);
+  return plan;
+}
+
 // The control worker on a plan 3 m straight ahead of a robot at the origin facing +x, on no
 // grid (no map guard), without the start's standing still and look around; each step the
 // base moves as `moves` lets it.
 class ControlOnAStraightPath : public ::testing::Test {
  protected:
-  ControlOnAStraightPath() : mediator_(0.0, {}), control_(mediator_, robotio::Rig{}, Config()) {
-    Plan plan;
-    plan.has_goal = true;
-    plan.goal_map = {3.0, 0.0};
-    plan.path_map = {{0.0, 0.0}, {3.0, 0.0}};
-    mediator_.plan.Set(plan);
-  }
-
-  static ControlWorkerConfig Config() {
-    ControlWorkerConfig config;
-    config.initial_still_s = 0.0;
-    config.initial_turn_rad = 0.0;
-    return config;
+  ControlOnAStraightPath()
+      : mediator_(0.0, {}), control_(mediator_, robotio::Rig{}, WithoutTheStart()) {
+    mediator_.plan.Set(StraightPlan(3.0, nullptr));
   }
 
   // One control step; the base then covers `moves(v)` metres along x.
@@ -94,18 +113,9 @@ TEST(ControlWorker, CruisesAtTheSpeedItsGridClearanceAllowsInTheOpen) {
   // A plan on a free grid with a free clearance grid: the follower is given the grid's
   // clearance (its proximity range), not the footprint radius as when there is no grid.
   Mediator mediator(0.0, {});
-  ControlWorkerConfig config;
-  config.initial_still_s = 0.0;
-  config.initial_turn_rad = 0.0;
+  const ControlWorkerConfig config = WithoutTheStart();
   ControlWorker control(mediator, robotio::Rig{}, config);
-  auto map = std::make_shared<planning::GridMap>(200, 80, 0.05, planning::CellState::kNavigable);
-  map->origin_x_m = -1.0;
-  map->origin_y_m = -2.0;
-  Plan plan;
-  plan.has_goal = true;
-  plan.goal_map = {8.0, 0.0};
-  plan.path_map = {{0.0, 0.0}, {8.0, 0.0}};
-  plan.map = map;
+  Plan plan = StraightPlan(8.0, FreeGrid());
   plan.clearance = std::make_shared<planning::TraversalGrid>(200, 80, 0.0);
   mediator.plan.Set(plan);
   robotio::Pose2D pose;
@@ -134,22 +144,13 @@ TEST(ControlWorker, AMapGuardHoldThatLastsReportsTheWayAheadBlocked) {
   // it; once it has held for map_guard_give_up_s the planner gets the way ahead blocked,
   // and again after as long if nothing changes.
   Mediator mediator(0.0, {});
-  ControlWorkerConfig config;
-  config.initial_still_s = 0.0;
-  config.initial_turn_rad = 0.0;
+  const ControlWorkerConfig config = WithoutTheStart();
   ControlWorker control(mediator, robotio::Rig{}, config);
-  auto map = std::make_shared<planning::GridMap>(200, 80, 0.05, planning::CellState::kNavigable);
-  map->origin_x_m = -1.0;
-  map->origin_y_m = -2.0;
+  const std::shared_ptr<planning::GridMap> map = FreeGrid();
   for (int y = 0; y < map->height; ++y) {
     for (const int x : {40, 41}) map->Set({x, y}, planning::CellState::kObstacle);
   }
-  Plan plan;
-  plan.has_goal = true;
-  plan.goal_map = {3.0, 0.0};
-  plan.path_map = {{0.0, 0.0}, {3.0, 0.0}};
-  plan.map = map;
-  mediator.plan.Set(plan);
+  mediator.plan.Set(StraightPlan(3.0, map));
   robotio::Pose2D pose;
   double first_held_s = -1.0;
   double first_report_s = -1.0;
@@ -161,7 +162,7 @@ TEST(ControlWorker, AMapGuardHoldThatLastsReportsTheWayAheadBlocked) {
     const robotio::VelocityCommand c = control.Tick(robotio::SecondsToNanos(t), kDt);
     pose.x += c.v * kDt;
     if (first_held_s < 0.0 && mediator.counters.map_guard_stops.load() > 0) first_held_s = t;
-    std::vector<Eigen::Vector2d> obstacles = mediator.TakeObstacles();
+    const std::vector<Eigen::Vector2d> obstacles = mediator.TakeObstacles();
     if (!obstacles.empty() && first_report_s < 0.0) {
       first_report_s = t;
       reported = obstacles;
