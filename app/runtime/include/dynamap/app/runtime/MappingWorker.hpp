@@ -12,8 +12,8 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_set>
 
+#include "dynamap/app/runtime/InspectedSurfaces.hpp"
 #include "dynamap/app/runtime/Mediator.hpp"
 #include "dynamap/app/runtime/MissionConfig.hpp"
 #include "dynamap/app/runtime/ScanAssembler.hpp"
@@ -50,7 +50,9 @@ class MappingWorker {
   [[nodiscard]] const mapping::DualMap& map() const { return slam_ ? slam_->map() : map_; }
   [[nodiscard]] mapping::PointAccuracy Accuracy() const;
   [[nodiscard]] mapping::MisclassifiedVoxels Misclassified() const;
-  [[nodiscard]] bool Inspected(const Eigen::Vector3f& p_map) const;  // Within one voxel.
+  // A surface point (frame of the simulator's true poses) hit within the inspection
+  // distance, within one voxel (InspectedSurfaces).
+  [[nodiscard]] bool Inspected(const Eigen::Vector3f& p) const;
   [[nodiscard]] const planning::GridMap& grid() const { return projector_.map(); }
   // After Run() returned: the closures not yet made (all of them, unless they were made
   // as the robot went) and the pose graph solved over the whole mission.
@@ -73,7 +75,6 @@ class MappingWorker {
              const robotio::Pose2D& T_map_base, const robotio::Pose2D& odometry);
   // Re-projects the grid columns the processed frames looked through, then publishes it.
   void Reproject();
-  [[nodiscard]] std::uint64_t VoxelId(const Eigen::Vector3f& p) const;
 
   Mediator& mediator_;
   robotio::Rig rig_;
@@ -85,7 +86,7 @@ class MappingWorker {
   bool loops_closed_ = false;
   planning::MapProjector projector_;
   mapping::PointAccuracyCounter accuracy_;
-  std::unordered_set<std::uint64_t> inspected_voxels_;
+  InspectedSurfaces inspected_;
   ScanAssembler scans_;                   // Both Kinects' frames of one instant together.
   std::vector<Eigen::Vector2f> touched_;  // Columns to re-project after this batch.
   std::vector<Eigen::Vector2f> hit_;      // Columns where this batch hit an obstacle.
