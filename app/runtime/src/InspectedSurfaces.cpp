@@ -1,18 +1,8 @@
 #include "dynamap/app/runtime/InspectedSurfaces.hpp"
 
-#include <algorithm>
 #include <cmath>
 
-#include "dynamap/robotio/DepthProjection.hpp"
-
 namespace dynamap::app::runtime {
-namespace {
-
-// Rays per image row sampled for the inspection: about one per voxel at the inspection
-// distance, whatever the resolution of the Kinects.
-constexpr int kInspectionRaysPerRow = 160;
-
-}  // namespace
 
 InspectedSurfaces::InspectedSurfaces(double resolution_m, double inspection_distance_m)
     : resolution_m_(resolution_m), inspection_distance_m_(inspection_distance_m) {}
@@ -26,10 +16,7 @@ std::uint64_t InspectedSurfaces::VoxelId(const Eigen::Vector3f& p) const {
   return pack(p.x()) | (pack(p.y()) << 21) | (pack(p.z()) << 42);
 }
 
-void InspectedSurfaces::Add(const robotio::DepthFrame& depth, const robotio::KinectMount& mount,
-                            const Eigen::Isometry3d& T_world_base) {
-  const int stride = std::max(1, depth.width / kInspectionRaysPerRow);
-  const robotio::DepthRays rays = robotio::DepthToRays(depth, mount, T_world_base, stride);
+void InspectedSurfaces::Add(const robotio::DepthRays& rays) {
   for (std::size_t i = 0; i < rays.ends.size(); ++i) {
     if (rays.hit[i] && (rays.ends[i] - rays.origin).norm() <= inspection_distance_m_) {
       voxels_.insert(VoxelId(rays.ends[i]));

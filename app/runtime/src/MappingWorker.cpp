@@ -15,8 +15,9 @@
 namespace dynamap::app::runtime {
 
 namespace {
-// Rays per image row sampled for the columns a frame looked through.
-constexpr int kProjectionRaysPerRow = 160;
+// Rays per image row sampled for the columns a frame looked through and the surfaces it
+// saw closely: about one per voxel at the inspection distance, whatever the resolution.
+constexpr int kRaysPerRow = 160;
 
 // Longest capture-time span of one scan: three quarters of the fastest Kinect's period,
 // as `dynamap map` groups a recording.
@@ -52,16 +53,22 @@ void MappingWorker::Score(const CapturedFrame& frame, const robotio::KinectMount
                           const robotio::Pose2D& T_map_base, const robotio::Pose2D& odometry) {
   const Eigen::Isometry3d T = T_map_base.ToIsometry();
   if (frame.labels) accuracy_.Add(frame.depth, *frame.labels, mount, T);
-  // Surfaces hit from within the inspection distance, from where the Kinect really was
-  // when the simulator says: the coverage is scored against the true surfaces, and marked
-  // from an estimate 0.1 m off, a wall seen from 1 m landed a voxel or two beside the true
-  // one and counted as missed (an office mission under SLAM, its online estimate 0.16 m
-  // RMS off, scored 0.41); the map's error is scored by SA and the ATE.
-  inspected_.Add(frame.depth, mount, frame.true_pose.value_or(T_map_base).ToIsometry());
-  // The grid columns the frame looked through (only those can change in the projection),
-  // from a 160 px wide sample of the image.
-  const int stride = std::max(1, frame.depth.width / kProjectionRaysPerRow);
+  // The grid columns the frame looked through (only those can change in the projection)
+  // and the surfaces it hit from within the inspection distance.
+  const int stride = std::max(1, frame.depth.width / kRaysPerRow);
   const robotio::DepthRays rays = robotio::DepthToRays(frame.depth, mount, T, stride);
+  // The surfaces from where the Kinect really was when the simulator says: the coverage
+  // is scored against the true surfaces, and marked from an estimate 0.1 m off, a wall
+  // seen from 1 m landed a voxel or two beside the true one and counted as missed (an
+  // office mission under SLAM, its online estimate 0.16 m RMS off, scored 0.41); the
+  // map's error is scored by SA and the ATE.
+  const robotio::Pose2D seen_from = frame.true_pose.value_or(T_map_base);
+  if (seen_from.x == T_map_base.x && seen_from.y == T_map_base.y &&
+      seen_from.theta == T_map_base.theta) {
+    inspected_.Add(rays);
+  } else {
+    inspected_.Add(robotio::DepthToRays(frame.depth, mount, seen_from.ToIsometry(), stride));
+  }
   const std::vector<Eigen::Vector2f> columns = planning::TouchedColumns(rays, projector_.map());
   touched_.insert(touched_.end(), columns.begin(), columns.end());
   const std::vector<Eigen::Vector2f> hits = planning::HitColumns(

@@ -2,13 +2,12 @@
 // for the report's surface coverage (scored against the simulator's true surfaces).
 #pragma once
 
-#include <Eigen/Geometry>
+#include <Eigen/Core>
 
 #include <cstdint>
 #include <unordered_set>
 
-#include "dynamap/robotio/DepthFrame.hpp"
-#include "dynamap/robotio/Rig.hpp"
+#include "dynamap/robotio/DepthProjection.hpp"
 
 namespace dynamap::app::runtime {
 
@@ -16,10 +15,9 @@ class InspectedSurfaces {
  public:
   InspectedSurfaces(double resolution_m, double inspection_distance_m);
 
-  // Marks the voxels `depth` hit within the inspection distance of the Kinect, seen from
-  // `T_world_base` (a sample of about 160 rays per image row).
-  void Add(const robotio::DepthFrame& depth, const robotio::KinectMount& mount,
-           const Eigen::Isometry3d& T_world_base);
+  // Marks the voxels a frame's rays (robotio::DepthToRays, placed where the Kinect was)
+  // hit within the inspection distance of their origin.
+  void Add(const robotio::DepthRays& rays);
   // A hit marked in the voxel of `p` or one of its 26 neighbours.
   [[nodiscard]] bool Contains(const Eigen::Vector3f& p) const;
 
