@@ -6,8 +6,10 @@
 
 namespace dynamap::planning {
 
+double SqueezeAllowance(double resolution_m) { return 0.5 * resolution_m; }
+
 double SqueezeRadius(const CostFieldConfig& cost, double resolution_m) {
-  return cost.robot_radius_m - 0.5 * resolution_m;
+  return cost.robot_radius_m - SqueezeAllowance(resolution_m);
 }
 
 TraversalGrid BuildSqueezeGrid(const GridMap& map, const CostFieldConfig& cost) {

@@ -8,6 +8,7 @@
 
 #include "dynamap/planning/CostField.hpp"
 #include "dynamap/planning/MapGuard.hpp"
+#include "dynamap/planning/SqueezePath.hpp"
 #include "dynamap/robotio/Time.hpp"
 
 namespace dynamap::app::runtime {
@@ -201,12 +202,12 @@ robotio::VelocityCommand ControlWorker::HoldAtKnownObstacles(const Plan* plan,
   // pose and the shifted one must both run into the map's obstacle: the shift exists
   // because one of them is off the map by up to that much, and holding whenever either
   // did left the base standing for good in a doorway it had been shifted into.
-  // A squeezed path counts on the half cell by which an obstacle cell's centre may lie
-  // beyond the surface (a doorway mapped a cell narrower a side); measured with the full
-  // footprint, the guard held the base at the doorway it was planned through, for good
-  // (office seed 2 stood 660 s in front of N2's door, docs/RESULTS.md).
-  const double footprint =
-      config_.guard.footprint_radius_m - (plan->squeezed ? 0.5 * map.resolution_m : 0.0);
+  // A squeezed path is measured with the squeeze's allowance off the footprint too:
+  // measured with the full footprint, the guard held the base at the doorway the path was
+  // planned through, for good (office seed 2 stood 660 s in front of N2's door,
+  // docs/RESULTS.md).
+  const double footprint = config_.guard.footprint_radius_m -
+                           (plan->squeezed ? planning::SqueezeAllowance(map.resolution_m) : 0.0);
   const auto drives_in = [&](const robotio::Pose2D& p) {
     return planning::DrivesIntoKnownObstacle(map, p, command, footprint, config_.map_guard_s);
   };

@@ -21,7 +21,10 @@ struct SqueezePath {
   GridPath path;       // From `robot` to `goal` on it.
 };
 
-// The robot's radius used for squeezing: `cost.robot_radius_m` less half a cell.
+// m a squeeze takes off the robot's radius: half a cell, by which an obstacle cell's
+// centre may lie beyond the surface it holds (a doorway mapped a cell narrower a side).
+[[nodiscard]] double SqueezeAllowance(double resolution_m);
+// The robot's radius used for squeezing: `cost.robot_radius_m` less SqueezeAllowance.
 [[nodiscard]] double SqueezeRadius(const CostFieldConfig& cost, double resolution_m);
 
 // `map` inflated by SqueezeRadius, with holes kept at their full distance (radius plus
