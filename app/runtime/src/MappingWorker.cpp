@@ -62,12 +62,11 @@ void MappingWorker::Score(const CapturedFrame& frame, const robotio::KinectMount
   // seen from 1 m landed a voxel or two beside the true one and counted as missed (an
   // office mission under SLAM, its online estimate 0.16 m RMS off, scored 0.41); the
   // map's error is scored by SA and the ATE.
-  const robotio::Pose2D seen_from = frame.true_pose.value_or(T_map_base);
-  if (seen_from.x == T_map_base.x && seen_from.y == T_map_base.y &&
-      seen_from.theta == T_map_base.theta) {
+  // Frames placed at their true pose (or with no truth to place them by) share the rays.
+  if (!frame.true_pose || config_.poses == PoseSource::kGroundTruth) {
     inspected_.Add(rays);
   } else {
-    inspected_.Add(robotio::DepthToRays(frame.depth, mount, seen_from.ToIsometry(), stride));
+    inspected_.Add(robotio::DepthToRays(frame.depth, mount, frame.true_pose->ToIsometry(), stride));
   }
   const std::vector<Eigen::Vector2f> columns = planning::TouchedColumns(rays, projector_.map());
   touched_.insert(touched_.end(), columns.begin(), columns.end());
