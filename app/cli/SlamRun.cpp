@@ -47,6 +47,7 @@ ScanOutcome ProcessWithOdometry(mapping::SlamLoop& slam, const mapping::Trajecto
   out.record.reference_rebuilt = step.reference_rebuilt;
   FillRegistration(step.registration, &out.record);
   out.record.scan_points = step.scan_points;
+  out.record.wall_theta = step.wall_heading_rad;
   out.pose = step.pose.ToIsometry();
   for (const robotio::Pose2D& at : odometry) {
     out.frame_poses.push_back(step.pose.Compose(odometry.front().Between(at)).ToIsometry());
@@ -196,17 +197,20 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
 std::string ScanRecordsCsv(const std::vector<SlamScanRecord>& scans) {
   std::string csv =
       "stamp_s,predicted_x,predicted_y,predicted_theta,x,y,theta,reference,accepted,"
-      "reference_rebuilt,fitness_rmse_m,inlier_ratio,iterations,structure,scan_points\n";
+      "reference_rebuilt,fitness_rmse_m,inlier_ratio,iterations,structure,scan_points,"
+      "wall_theta\n";
   char line[512];
   for (const SlamScanRecord& r : scans) {
     const bool registered = !r.reference.empty();
+    char wall[32] = "";
+    if (r.wall_theta) std::snprintf(wall, sizeof(wall), "%.6f", *r.wall_theta);
     std::snprintf(line, sizeof(line),
-                  "%.6f,%.5f,%.5f,%.6f,%.5f,%.5f,%.6f,%s,%d,%d,%.5f,%.4f,%d,%.5f,%zu\n",
+                  "%.6f,%.5f,%.5f,%.6f,%.5f,%.5f,%.6f,%s,%d,%d,%.5f,%.4f,%d,%.5f,%zu,%s\n",
                   robotio::NanosToSeconds(r.stamp_ns), r.predicted.x, r.predicted.y,
                   r.predicted.theta, r.pose.x, r.pose.y, r.pose.theta,
                   registered ? r.reference.c_str() : "none", r.accepted ? 1 : 0,
                   r.reference_rebuilt ? 1 : 0, registered ? r.fitness_rmse_m : 0.0,
-                  r.inlier_ratio, r.iterations, r.structure, r.scan_points);
+                  r.inlier_ratio, r.iterations, r.structure, r.scan_points, wall);
     csv += line;
   }
   return csv;

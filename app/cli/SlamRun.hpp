@@ -47,6 +47,8 @@ struct SlamScanRecord {
   // and yaw (near 0 along a bare corridor).
   double structure = 0.0;
   std::size_t scan_points = 0;
+  // The heading the walls said (SlamConfig::wall_heading), when one was fused.
+  std::optional<double> wall_theta;
 };
 
 struct SlamRunResult {

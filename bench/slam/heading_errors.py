@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 """Heading errors of a SLAM pass, per minute, against a recording's ground truth.
 
-    bench/slam/heading_errors.py RECORDING/groundtruth.txt MAP/slam_scans.csv
+    bench/slam/heading_errors.py RECORDING/groundtruth.txt MAP/slam_scans.csv [WALL_SIGMA_RAD]
 
 Prints, per minute of the pass: how far dead reckoning's heading drifted (the odometry
 increments `dynamap map` fused, against the true ones), the heading error of the fused
-estimate, and that of the registrations themselves (recovered from each fusion step by
-undoing its Kalman gain, which is recomputed with SlamConfig's default sigmas). Then the
+estimate, that of the registrations themselves (recovered from each fusion step by
+undoing its Kalman gain, which is recomputed with SlamConfig's default sigmas) and, when
+the pass fused the walls' heading (wall_heading in SlamConfig; WALL_SIGMA_RAD its
+sigma_rad, 0.005 unless given), that of the walls' measurements. Then the
 RMS heading error of the same measurements re-filtered offline with a gyro-bias state
 (no feedback through the map: each registration stays what it was in the pass).
 Python 3 standard library only.
@@ -20,6 +22,7 @@ import sys
 ODOMETRY_SIGMA_PER_SQRT_RAD = 0.01
 HEADING_SIGMA_PER_SQRT_S = 0.001
 REGISTRATION_SIGMA_RAD = 0.002
+WALL_SIGMA_RAD = 0.005
 # The offline re-filter: registration heading noise, bias random walk, gyro angle noise.
 REFILTER_SIGMA_RAD = 0.1
 REFILTER_BIAS_WALK = 1e-6
@@ -54,9 +57,9 @@ def true_heading(groundtruth):
     return at
 
 
-def main(groundtruth, scans_csv):
+def main(groundtruth, scans_csv, wall_sigma=WALL_SIGMA_RAD):
     truth = true_heading(groundtruth)
-    scans = []  # (t, odometry increment, registration heading or None, fused, true)
+    scans = []  # (t, odometry increment, registration heading or None, fused, true, walls)
     variance, last_t, last_theta = 0.0, None, None
     for row in csv.DictReader(open(scans_csv)):
         t, predicted, fused = (float(row[k]) for k in ('stamp_s', 'predicted_theta', 'theta'))
@@ -64,40 +67,57 @@ def main(groundtruth, scans_csv):
         elapsed = t - last_t if last_t is not None else 0.0
         variance += (ODOMETRY_SIGMA_PER_SQRT_RAD ** 2 * abs(increment) +
                      HEADING_SIGMA_PER_SQRT_S ** 2 * elapsed)
+        walls = float(row['wall_theta']) if row.get('wall_theta') else None
+        if walls is not None:
+            # The walls were fused after the registration: undo their step first.
+            registered_variance = variance * (1.0 if row['accepted'] != '1' else
+                                              REGISTRATION_SIGMA_RAD ** 2 /
+                                              (variance + REGISTRATION_SIGMA_RAD ** 2))
+            wall_gain = registered_variance / (registered_variance + wall_sigma ** 2)
+            after_registration = walls + wrap(fused - walls) / (1.0 - wall_gain)
+        else:
+            after_registration = fused
         registered = None
         if row['accepted'] == '1':
             gain = variance / (variance + REGISTRATION_SIGMA_RAD ** 2)
             if gain > 1e-3:
-                registered = predicted + wrap(fused - predicted) / gain
+                registered = predicted + wrap(after_registration - predicted) / gain
             variance *= 1.0 - gain
-        scans.append((t, increment, registered, fused, truth(t)))
+        if walls is not None:
+            variance *= wall_sigma ** 2 / (variance + wall_sigma ** 2)
+        scans.append((t, increment, registered, fused, truth(t), walls))
         last_t, last_theta = t, fused
 
     degrees = math.degrees
     drift = 0.0
     minutes = {}
-    for k, (t, increment, registered, fused, true) in enumerate(scans):
+    for k, (t, increment, registered, fused, true, walls) in enumerate(scans):
         if k > 0:
             drift += increment - (true - scans[k - 1][4])
-        m = minutes.setdefault(int(t // 60), {'drift': [], 'fused': [], 'registered': []})
+        m = minutes.setdefault(int(t // 60), {'drift': [], 'fused': [], 'registered': [], 'walls': []})
         m['drift'].append(drift)
         m['fused'].append(wrap(fused - true))
         if registered is not None:
             m['registered'].append(wrap(registered - true))
+        if walls is not None:
+            m['walls'].append(wrap(walls - true))
     mean = lambda v: sum(v) / len(v)
     rms = lambda v: math.sqrt(sum(x * x for x in v) / len(v))
-    print('minute  dead reckoning drift deg (total)  fused mean / rms deg  registrations mean / rms deg')
+    print('minute  dead reckoning drift deg (total)  fused mean / rms deg  registrations mean / rms deg'
+          '  walls mean / rms deg (scans)')
     for minute, m in sorted(minutes.items()):
         reg = m['registered'] or [float('nan')]
+        walls = m['walls'] or [float('nan')]
         print(f'{minute:6d}  {degrees(m["drift"][-1] - m["drift"][0]):8.3f} ({degrees(m["drift"][-1]):7.2f})'
               f'  {degrees(mean(m["fused"])):8.3f} / {degrees(rms(m["fused"])):6.3f}'
-              f'  {degrees(mean(reg)):8.3f} / {degrees(rms(reg)):6.3f}')
+              f'  {degrees(mean(reg)):8.3f} / {degrees(rms(reg)):6.3f}'
+              f'  {degrees(mean(walls)):8.3f} / {degrees(rms(walls)):6.3f} ({len(m["walls"])})')
 
     # Re-filter: state (heading, residual gyro bias).
     theta, bias = 0.0, 0.0
     p00, p01, p11 = 1e-8, 0.0, 1e-8
     errors, last_t = [], None
-    for t, increment, registered, fused, true in scans:
+    for t, increment, registered, fused, true, _ in scans:
         dt = t - last_t if last_t is not None else 0.0
         last_t = t
         theta += increment - bias * dt
@@ -118,6 +138,6 @@ def main(groundtruth, scans_csv):
 
 
 if __name__ == '__main__':
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    main(sys.argv[1], sys.argv[2], *(float(a) for a in sys.argv[3:]))

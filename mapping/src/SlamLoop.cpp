@@ -96,6 +96,9 @@ SlamConfig ParseSlamConfig(robotio::ConfigNode& node) {
   if (auto registration = node.OptionalChild("registration")) {
     config.registration = ParseRegistrationConfig(*registration);
   }
+  if (auto wall_heading = node.OptionalChild("wall_heading")) {
+    config.wall_heading = ParseWallHeadingConfig(*wall_heading);
+  }
   if (auto loop_closure = node.OptionalChild("loop_closure")) {
     config.loop_closure = ParseLoopClosureConfig(*loop_closure);
   }
@@ -148,6 +151,9 @@ SlamLoop::SlamLoop(SlamConfig config, const MappingConfig& mapping, robotio::Rig
     mount.max_range_m = std::min(mount.max_range_m, mapping.max_range_m);
   }
   scan_rig_ = RegistrationRig(rig_, config_, mapping);
+  if (config_.wall_heading.enabled && config_.fuse_with_odometry) {
+    wall_heading_.emplace(config_.wall_heading);
+  }
 }
 
 robotio::PointList SlamLoop::MapReference(const robotio::Pose2D& around) const {
@@ -223,6 +229,18 @@ robotio::Pose2D SlamLoop::Fuse(const robotio::Pose2D& predicted,
           predicted.y + k_xy * (registered.y - predicted.y),
           robotio::WrapAngle(predicted.theta +
                              k_theta * robotio::WrapAngle(registered.theta - predicted.theta))};
+}
+
+std::optional<double> SlamLoop::FuseWallHeading(const robotio::PointList& scan_base,
+                                                robotio::Pose2D* pose) {
+  if (!wall_heading_) return std::nullopt;
+  const std::optional<double> measured = wall_heading_->Measure(scan_base, pose->theta);
+  if (!measured) return std::nullopt;
+  const double r = config_.wall_heading.sigma_rad * config_.wall_heading.sigma_rad;
+  const double k = heading_variance_ / (heading_variance_ + r);
+  heading_variance_ *= 1.0 - k;
+  pose->theta = robotio::WrapAngle(pose->theta + k * robotio::WrapAngle(*measured - pose->theta));
+  return measured;
 }
 
 bool SlamLoop::Acceptable(const RegistrationResult& result, const robotio::Pose2D& predicted,
@@ -329,6 +347,9 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
       try_reference(previous_registration_, "previous", step.predicted, scan_motion);
     }
   }
+  // The walls' heading: from the scan before thinning, moved back into the base frame.
+  step.wall_heading_rad = FuseWallHeading(Transformed(scan_map, step.predicted.Inverse()),
+                                          &step.pose);
   step.register_s = SecondsSince(t);
   pose_ = step.pose;
   if (step.accepted && step.reference == "map") {

@@ -15,6 +15,7 @@
 #include "dynamap/mapping/LoopClosure.hpp"
 #include "dynamap/mapping/MappingConfig.hpp"
 #include "dynamap/mapping/Registration.hpp"
+#include "dynamap/mapping/WallHeading.hpp"
 #include "dynamap/robotio/ConfigReader.hpp"
 #include "dynamap/robotio/DepthFrame.hpp"
 #include "dynamap/robotio/Pose2D.hpp"
@@ -103,6 +104,9 @@ struct SlamConfig {
   double heading_sigma_per_sqrt_s = 0.001;    // rad per √s (gyro noise, bias left over).
   double registration_sigma_m = 0.005;        // m, one registration's position noise.
   double registration_sigma_rad = 0.002;      // rad, its heading noise.
+  // The walls' directions as a heading measurement fused after the registration
+  // (WallHeading.hpp; only with fuse_with_odometry).
+  WallHeadingConfig wall_heading;
   // After a pass over a recording, keyframes registered against older ones nearby close
   // the loops the pass made, and the map is built again from the corrected poses
   // (LoopClosure.hpp; dynamap map); a mission closes them when it ends and corrects its
@@ -142,6 +146,7 @@ struct SlamStep {
   std::string reference;      // "previous" or "map" for the one accepted (else last tried).
   RegistrationResult registration;
   bool reference_rebuilt = false;  // The map target was rebuilt for this scan.
+  std::optional<double> wall_heading_rad;  // The heading the walls said, when fused.
   std::size_t scan_points = 0;  // After preprocessing.
   double preprocess_s = 0.0;    // Wall time of each stage.
   double register_s = 0.0;
@@ -204,6 +209,10 @@ class SlamLoop {
   // `registered` fused with `predicted` by the variances; shrinks them.
   [[nodiscard]] robotio::Pose2D Fuse(const robotio::Pose2D& predicted,
                                      const robotio::Pose2D& registered);
+  // Fuses the heading the walls of the scan (base frame) say into `pose`; returns it.
+  std::optional<double> FuseWallHeading(const robotio::PointList& scan_base,
+                                        robotio::Pose2D* pose);
+  std::optional<WallHeading> wall_heading_;        // When config_.wall_heading.enabled.
   robotio::PointList previous_scan_map_;           // Last scan's points in the map frame.
   robotio::PointList last_scan_;                   // The same in the base frame.
   // Running mean of the scan points that fell in each leaf voxel (map frame).
