@@ -233,7 +233,6 @@ robotio::Pose2D SlamLoop::Fuse(const robotio::Pose2D& predicted,
 
 std::optional<double> SlamLoop::FuseWallHeading(const robotio::PointList& scan_base,
                                                 robotio::Pose2D* pose) {
-  if (!wall_heading_) return std::nullopt;
   const std::optional<double> measured = wall_heading_->Measure(scan_base, pose->theta);
   if (!measured) return std::nullopt;
   const double r = config_.wall_heading.sigma_rad * config_.wall_heading.sigma_rad;
@@ -348,8 +347,10 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
     }
   }
   // The walls' heading: from the scan before thinning, moved back into the base frame.
-  step.wall_heading_rad = FuseWallHeading(Transformed(scan_map, step.predicted.Inverse()),
-                                          &step.pose);
+  if (wall_heading_) {
+    step.wall_heading_rad =
+        FuseWallHeading(Transformed(scan_map, step.predicted.Inverse()), &step.pose);
+  }
   step.register_s = SecondsSince(t);
   pose_ = step.pose;
   if (step.accepted && step.reference == "map") {

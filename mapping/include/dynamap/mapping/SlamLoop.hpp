@@ -210,6 +210,7 @@ class SlamLoop {
   [[nodiscard]] robotio::Pose2D Fuse(const robotio::Pose2D& predicted,
                                      const robotio::Pose2D& registered);
   // Fuses the heading the walls of the scan (base frame) say into `pose`; returns it.
+  // Only with wall_heading_.
   std::optional<double> FuseWallHeading(const robotio::PointList& scan_base,
                                         robotio::Pose2D* pose);
   std::optional<WallHeading> wall_heading_;        // When config_.wall_heading.enabled.
