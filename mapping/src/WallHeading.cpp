@@ -44,6 +44,9 @@ WallHeadingConfig ParseWallHeadingConfig(robotio::ConfigNode& node) {
   node.Read("cell_m", &config.cell_m, 0.02, 1.0);
   node.Read("min_height_m", &config.min_height_m, -10.0, 10.0);
   node.Read("max_height_m", &config.max_height_m, -10.0, 10.0);
+  if (config.max_height_m <= config.min_height_m) {
+    node.Fail("max_height_m", "must be above min_height_m");
+  }
   node.Read("max_thickness_ratio", &config.max_thickness_ratio, 0.0, 1.0);
   node.Read("min_aligned_cells", &config.min_aligned_cells, 1, 1'000'000);
   node.Read("min_aligned_share", &config.min_aligned_share, 0.0, 1.0);
@@ -69,10 +72,9 @@ std::vector<LinePiece> LinePieces(const robotio::PointList& points,
         .push_back(static_cast<int>(flat.size()));
     flat.emplace_back(p.x(), p.y());
   }
-  // Each fit takes the points within a circle round the cell's own mean. A square window
-  // would cut a noisy line unevenly at its corners and pull the fitted direction towards
-  // the window's axes (0.2° at 17° with 1 cm of noise); a circle centred on the line cuts
-  // it the same on both sides.
+  // Each fit takes the points within a circle round the cell's own mean: a circle centred
+  // on the line cuts a noisy line the same on both sides, where a square window cuts it
+  // unevenly at its corners whenever the line is not along the window's axes.
   const double radius = 1.5 * config.cell_m;
   const double min_spread = 0.5 * config.cell_m;  // Along the piece, standard deviation.
   std::vector<LinePiece> pieces;
@@ -111,7 +113,7 @@ std::vector<LinePiece> LinePieces(const robotio::PointList& points,
     const double across = std::max(0.0, half_trace - root);
     if (along <= min_spread * min_spread) continue;
     if (std::sqrt(across / along) > config.max_thickness_ratio) continue;
-    pieces.push_back({WrapQuarter(0.5 * std::atan2(2.0 * cxy, cxx - cyy)), n});
+    pieces.push_back({WrapQuarter(0.5 * std::atan2(2.0 * cxy, cxx - cyy))});
   }
   return pieces;
 }

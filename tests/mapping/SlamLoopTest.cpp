@@ -190,6 +190,18 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   ASSERT_FALSE(refused.ok());
   EXPECT_NE(refused.error().message.find("slam_bad.yaml"), std::string::npos);
   EXPECT_NE(refused.error().message.find("max_correction_per_radian"), std::string::npos);
+
+  // A walls' height band upside down is refused, naming the key.
+  const std::string band = dir + "/slam_band.yaml";
+  f = std::fopen(band.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs("wall_heading: {min_height_m: 1.5, max_height_m: 0.5}\n", f);
+  std::fclose(f);
+  const auto upside_down = LoadSlamConfig(band);
+  ASSERT_FALSE(upside_down.ok());
+  EXPECT_NE(upside_down.error().message.find("slam_band.yaml"), std::string::npos);
+  EXPECT_NE(upside_down.error().message.find("wall_heading.max_height_m"), std::string::npos)
+      << upside_down.error().message;
 }
 
 // SLAM with the default settings must end closer to the truth than odometry + gyro alone.

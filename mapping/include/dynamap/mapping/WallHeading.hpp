@@ -46,15 +46,14 @@ struct WallHeadingConfig {
 // [-45°, 45°) as radians, in the frame of the points.
 struct LinePiece {
   double angle_rad = 0.0;
-  int points = 0;
 };
 
 // The straight pieces of the points (base frame) within the height band, one per cell.
 [[nodiscard]] std::vector<LinePiece> LinePieces(const robotio::PointList& points,
                                                 const WallHeadingConfig& config);
 
-// The mean direction (modulo 90°) of the pieces within `gate_rad` of `around`, refined
-// twice; nullopt when fewer than the config's count or share lie there.
+// The mean direction (modulo 90°) of the pieces within `gate_rad` of `around`, the gate
+// recentred on the mean three times; nullopt when fewer than the config's count or share lie there.
 [[nodiscard]] std::optional<double> AlignedDirection(const std::vector<LinePiece>& pieces,
                                                      double around,
                                                      const WallHeadingConfig& config);
