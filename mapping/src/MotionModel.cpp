@@ -56,6 +56,14 @@ Pose2D DriveIncrement(double left_m, double right_m, std::int64_t t0_ns, std::in
     t = step_end;
     if (next != imu.end() && next->stamp_ns <= t) it = next;
   }
+  // Wheels that stood still: a differential drive cannot turn then, and what the gyro
+  // says is its noise and the part of its bias not (yet) taken out (0.003 rad/s unlearnt
+  // turns the heading 0.09° in the half second it takes to learn). A faster rate is the
+  // base being turned by something else (carried, pushed) and is followed.
+  if (left_m == 0.0 && right_m == 0.0 &&
+      std::abs(pose.theta) <= config.still_rate_rad_s * total_s) {
+    return Pose2D{};
+  }
   return pose;
 }
 

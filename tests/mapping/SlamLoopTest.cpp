@@ -11,8 +11,10 @@
 #include <octomap/octomap_utils.h>
 
 #include "dynamap/mapping/MotionModel.hpp"
+#include "dynamap/mapping/Preprocessing.hpp"
 #include "dynamap/mapping/SlamLoop.hpp"
 #include "dynamap/mapping/TrajectoryEvaluation.hpp"
+#include "dynamap/mapping/WallHeading.hpp"
 #include "dynamap/robotio/sim/Simulator.hpp"
 #include "dynamap/robotio/sim/WorldLoader.hpp"
 
@@ -276,6 +278,61 @@ TEST(SlamLoop, TheWallsHoldTheHeadingWhereTheGyroDrifts) {
   EXPECT_GT(measured, with.steps.size() / 2);
   EXPECT_LT(worst_with, worst_without);
   EXPECT_LT(ate_with->ate_m.rmse, ate_without->ate_m.rmse);
+}
+
+// The pose of the truth nearest in time to `stamp_ns`.
+robotio::Pose2D TruePoseAt(const robotio::Trajectory& truth, std::int64_t stamp_ns) {
+  const auto at = std::min_element(
+      truth.begin(), truth.end(), [stamp_ns](const auto& a, const auto& b) {
+        return std::llabs(a.stamp_ns - stamp_ns) < std::llabs(b.stamp_ns - stamp_ns);
+      });
+  return robotio::Pose2D::FromIsometry(at->pose);
+}
+
+// Walls seen from the true pose must say the true heading, on average as well as scan by
+// scan: along the corridor one wall is nearer than the other, so a tilt the Kinect's noise
+// (along the rays) gave each fitted line would not cancel between them. (It does not: the
+// scan is thinned on a grid that runs along the walls, and each voxel's mean keeps the
+// across-wall noise only, averaged.)
+TEST(SlamLoop, TheWallsSeenFromTheTruePoseSayTheTrueHeading) {
+  DriveSetup setup;
+  setup.people = false;
+  const OfficeDrive drive = SimulateOfficeDrive(setup);
+  const robotio::Rig rig = RegistrationRig(drive.rig, SlamConfig{}, MappingConfig{});
+  const WallHeadingConfig config;
+  std::vector<double> errors;
+  for (const auto& scan : drive.scans) {
+    std::vector<robotio::DepthFrame> group;
+    std::vector<robotio::Pose2D> offsets;
+    const robotio::Pose2D at_scan =
+        TruePoseAt(drive.truth, drive.frames[scan.front()].stamp_ns);
+    for (std::size_t i : scan) {
+      group.push_back(drive.frames[i]);
+      offsets.push_back(at_scan.Between(TruePoseAt(drive.truth, drive.frames[i].stamp_ns)));
+    }
+    const robotio::PointList in_map =
+        ScanPointsInMap(group, offsets, rig, at_scan, MappingConfig{}.voxel_filter_m);
+    const robotio::PointList in_base =
+        TransformedPoints(in_map, at_scan.Inverse().ToIsometry());
+    const double expected = WrapQuarter(-at_scan.theta);
+    const auto direction = AlignedDirection(LinePieces(in_base, config), expected, config);
+    if (!direction) continue;
+    errors.push_back(WrapQuarter(expected - *direction));
+  }
+  ASSERT_GT(errors.size(), drive.scans.size() / 2);
+  double sum = 0.0;
+  double squares = 0.0;
+  for (double e : errors) {
+    sum += e;
+    squares += e * e;
+  }
+  const double n = static_cast<double>(errors.size());
+  std::printf("walls measured %zu of %zu scans: mean error %.4f deg, RMS %.4f deg\n",
+              errors.size(), drive.scans.size(), sum / n * 180.0 / M_PI,
+              std::sqrt(squares / n) * 180.0 / M_PI);
+  // Measured: mean -0.009°, RMS 0.03° (0.003° / 0.02° at 320 px).
+  EXPECT_LT(std::abs(sum / n), 0.03 * M_PI / 180.0);
+  EXPECT_LT(std::sqrt(squares / n), 0.1 * M_PI / 180.0);
 }
 
 // Scan-to-scan registration on its own, every correction taken whole, over a straight 2 m:

@@ -26,6 +26,9 @@ struct MotionModelConfig {
   // rad/s: a still interval with a gyro sample further from zero is not counted (the
   // base was being turned by something else, not drifting).
   double max_learnt_bias_rad_s = 0.05;
+  // rad/s: over an interval in which neither wheel moved, a mean gyro rate (less the bias)
+  // within this is noise and unlearnt bias, and the heading stays; a faster one is followed.
+  double still_rate_rad_s = 0.01;
 };
 
 // The gyro's yaw-rate bias from the odometry intervals in which neither wheel moved (a
@@ -58,7 +61,8 @@ using Trajectory2D = std::vector<StampedPose2D>;
 // One odometry interval [t0_ns, t1_ns]: the base's displacement expressed in its pose at
 // t0. The wheel distance is spread evenly in time (constant speed within the interval);
 // the heading follows the gyro samples, each yaw rate held until the next sample, so an
-// arc comes out as a smooth curve rather than a chord. `imu` must be sorted by stamp.
+// arc comes out as a smooth curve rather than a chord. With neither wheel moving and the
+// gyro within config.still_rate_rad_s, nothing moved. `imu` must be sorted by stamp.
 [[nodiscard]] robotio::Pose2D DriveIncrement(double left_m, double right_m,
                                              std::int64_t t0_ns, std::int64_t t1_ns,
                                              const std::vector<robotio::ImuReading>& imu,
