@@ -204,6 +204,14 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   EXPECT_NE(upside_down.error().message.find("slam_band.yaml"), std::string::npos);
   EXPECT_NE(upside_down.error().message.find("wall_heading.max_height_m"), std::string::npos)
       << upside_down.error().message;
+
+  // The shipped walls' settings: the walls on, loop closure holding the heading.
+  const auto walls = LoadSlamConfig(Resource("slam/wall_heading.yaml"));
+  ASSERT_TRUE(walls.ok()) << walls.error().message;
+  EXPECT_TRUE(walls->wall_heading.enabled);
+  EXPECT_LT(walls->loop_closure.sequence_sigma_rad, SlamConfig{}.loop_closure.sequence_sigma_rad);
+  EXPECT_LT(walls->loop_closure.sequence_sigma_per_sqrt_rad,
+            SlamConfig{}.loop_closure.sequence_sigma_per_sqrt_rad);
 }
 
 // SLAM with the default settings must end closer to the truth than odometry + gyro alone.
