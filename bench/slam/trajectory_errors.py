@@ -63,13 +63,13 @@ def main(args):
             f'{math.degrees(sum(h for _, h in v) / len(v)):+.2f}' for m, v in sorted(minutes.items())))
     if every:
         start = runs[0][1][0][0]
+        stamps = [[e[0] for e in run] for _, run in runs]
         print('s  ' + ' | '.join('dx dy m, heading deg' for _ in runs))
         k = 0.0
         while True:
             row = []
-            for _, run in runs:
-                stamps = [e[0] for e in run]
-                i = bisect.bisect_left(stamps, start + k)
+            for (_, run), run_stamps in zip(runs, stamps):
+                i = bisect.bisect_left(run_stamps, start + k)
                 if i < len(run):
                     _, dx, dy, dh = run[i]
                     row.append(f'{dx:6.3f} {dy:6.3f} {math.degrees(dh):6.2f}')
