@@ -168,7 +168,8 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
       result.frame_poses.push_back({frames[k].stamp_ns, step.frame_poses[k]});
     }
     if (loop_closing) {
-      loop_closing->Offer(step.record.stamp_ns, step.record.pose, slam->last_registered_scan());
+      loop_closing->Offer(step.record.stamp_ns, step.record.pose, slam->last_registered_scan(),
+                          step.odometry);
     }
     if (progress) progress(static_cast<double>(s + 1) / static_cast<double>(scans.size()));
   }

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,9 @@ int main(int argc, char** argv) {
   if (trajectory->empty()) Fail(trajectory_file + ": no poses");
   const mapping::Trajectory2D poses = Planar(*trajectory);
   const mapping::Trajectory2D truth = Planar(reader->ground_truth());
+  // The wheels and gyro as SLAM's pass had them, for the odometry edges.
+  const mapping::Trajectory2D odometry =
+      mapping::DeadReckon(reader->odometry(), reader->imu(), mapping::MotionModelConfig{});
 
   std::vector<mapping::SlamConfig> configs;
   if (settings.empty()) settings.emplace_back("");
@@ -143,7 +147,9 @@ int main(int argc, char** argv) {
         points = RegisteredScan(frames, poses, rig, configs[c], mapping_config);
         built_for = &configs[c];
       }
-      closings[c].Offer(stamp, pose, points);
+      closings[c].Offer(stamp, pose, points,
+                        odometry.empty() ? std::nullopt
+                                         : std::optional(mapping::PoseAt(odometry, stamp)));
     }
     if (done % 500 == 0 || done == grouped.scans.size()) {
       std::fprintf(stderr, "\rscans %zu / %zu", done, grouped.scans.size());

@@ -52,6 +52,9 @@ LoopClosureConfig ParseLoopClosureConfig(robotio::ConfigNode& node) {
   node.Read("sequence_sigma_per_sqrt_m", &config.sequence_sigma_per_sqrt_m, 0.0, 1.0);
   node.Read("sequence_sigma_rad", &config.sequence_sigma_rad, 1e-7, 1.0);
   node.Read("sequence_sigma_per_sqrt_rad", &config.sequence_sigma_per_sqrt_rad, 0.0, 1.0);
+  node.Read("odometry_sigma_m", &config.odometry_sigma_m, 0.0, 1.0);
+  node.Read("odometry_sigma_per_sqrt_m", &config.odometry_sigma_per_sqrt_m, 0.0, 1.0);
+  node.Read("odometry_sigma_rad", &config.odometry_sigma_rad, 1e-6, 10.0);
   node.Read("closure_information_scale", &config.closure_information_scale, 0.0, 1e12);
   node.Read("correct_while_running", &config.correct_while_running);
   if (auto registration = node.OptionalChild("registration")) {
@@ -85,7 +88,8 @@ std::string LoopClosureAttemptsCsv(const std::vector<LoopClosureAttempt>& attemp
 LoopClosing::LoopClosing(LoopClosureConfig config) : config_(std::move(config)) {}
 
 bool LoopClosing::Offer(std::int64_t stamp_ns, const robotio::Pose2D& pose,
-                        const robotio::PointList& scan) {
+                        const robotio::PointList& scan,
+                        const std::optional<robotio::Pose2D>& odometry) {
   if (!keyframes_.empty()) {
     const robotio::Pose2D step = last_pose_.Between(pose);
     driven_since_keyframe_ += std::hypot(step.x, step.y);
@@ -95,7 +99,7 @@ bool LoopClosing::Offer(std::int64_t stamp_ns, const robotio::Pose2D& pose,
   const bool due = keyframes_.empty() || driven_since_keyframe_ >= config_.keyframe_distance_m ||
                    turned_since_keyframe_ >= config_.keyframe_angle_rad;
   if (!due || scan.empty()) return false;
-  keyframes_.push_back({stamp_ns, pose, pose, pose, scan});
+  keyframes_.push_back({stamp_ns, pose, pose, pose, scan, odometry});
   driven_since_keyframe_ = 0.0;
   turned_since_keyframe_ = 0.0;
   return true;
@@ -131,6 +135,24 @@ PoseGraphEdge LoopClosing::SequenceEdge(std::size_t to) const {
   edge.information = Eigen::Vector3d(1.0 / (sigma_m * sigma_m), 1.0 / (sigma_m * sigma_m),
                                      1.0 / (sigma_rad * sigma_rad))
                          .asDiagonal();
+  return edge;
+}
+
+std::optional<PoseGraphEdge> LoopClosing::OdometryEdge(std::size_t to) const {
+  const auto& from_odometry = keyframes_[to - 1].odometry;
+  const auto& to_odometry = keyframes_[to].odometry;
+  if (config_.odometry_sigma_m <= 0.0 || !from_odometry || !to_odometry) return std::nullopt;
+  PoseGraphEdge edge;
+  edge.from = to - 1;
+  edge.to = to;
+  edge.measured = from_odometry->Between(*to_odometry);
+  const double sigma_m =
+      config_.odometry_sigma_m +
+      config_.odometry_sigma_per_sqrt_m * std::sqrt(std::hypot(edge.measured.x, edge.measured.y));
+  edge.information =
+      Eigen::Vector3d(1.0 / (sigma_m * sigma_m), 1.0 / (sigma_m * sigma_m),
+                      1.0 / (config_.odometry_sigma_rad * config_.odometry_sigma_rad))
+          .asDiagonal();
   return edge;
 }
 
@@ -219,7 +241,10 @@ void LoopClosing::Solve(const std::vector<PoseGraphEdge>& closures,
                         const std::vector<std::size_t>& closure_attempts,
                         LoopClosureSummary* summary) {
   std::vector<PoseGraphEdge> edges;
-  for (std::size_t k = 1; k < keyframes_.size(); ++k) edges.push_back(SequenceEdge(k));
+  for (std::size_t k = 1; k < keyframes_.size(); ++k) {
+    edges.push_back(SequenceEdge(k));
+    if (const auto odometry = OdometryEdge(k)) edges.push_back(*odometry);
+  }
   const std::size_t sequence_edges = edges.size();
   edges.insert(edges.end(), closures.begin(), closures.end());
   std::vector<robotio::Pose2D> poses;

@@ -106,8 +106,9 @@ void MappingWorker::Process(const std::vector<CapturedFrame>& batch) {
     }
     // A closure moves the pose from the next scan on: this one is in the map where
     // `step.pose` put it.
-    if (loop_closing_ && loop_closing_->Offer(frames[0]->depth.stamp_ns, step.pose,
-                                              slam_->last_registered_scan()) &&
+    if (loop_closing_ &&
+        loop_closing_->Offer(frames[0]->depth.stamp_ns, step.pose,
+                             slam_->last_registered_scan(), odometry[0]) &&
         config_.slam.loop_closure.correct_while_running) {
       if (const auto correction = loop_closing_->CloseNewest()) {
         slam_->ApplyCorrection(*correction);

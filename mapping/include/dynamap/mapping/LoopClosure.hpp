@@ -56,6 +56,18 @@ struct LoopClosureConfig {
   double sequence_sigma_per_sqrt_m = 0.01;
   double sequence_sigma_rad = 0.0005;
   double sequence_sigma_per_sqrt_rad = 0.005;
+  // Odometry edges: between consecutive keyframes also the wheels' and gyro's relative
+  // pose, when the keyframes were offered with their odometry pose. SLAM's sequence edges
+  // carry what the registrations got wrong while the map ahead was new (a few cm along a
+  // few metres, docs/RESULTS.md), the wheels only their scale and slip; the graph weighs
+  // both. Position sigma per edge: floor + per √m driven; heading sigma per edge (large:
+  // the gyro's left-over bias, the heading stays SLAM's). odometry_sigma_m 0: no edges.
+  // On the office tour (default pass replayed) 0.052 m -> 0.018 m; 2 mm + 5 mm/√m 0.030,
+  // 1 mm + 1 mm/√m 0.020 (docs/RESULTS.md). Wheels whose scale is off by more than the
+  // simulated RMP's 0.1 % want a larger sigma.
+  double odometry_sigma_m = 0.001;
+  double odometry_sigma_per_sqrt_m = 0.003;
+  double odometry_sigma_rad = 0.01;
   // A closure's information is the registration's planar information (mean over its
   // inlier pairs, so a corridor's axis gets almost none) times this: effective number of
   // independent pairs / (point-to-plane noise)².
@@ -116,7 +128,9 @@ class LoopClosing {
   // A scan SLAM placed at `pose` (T_map_base) with its registered points (base frame);
   // kept as a keyframe when it is the first or the robot moved far enough since the
   // last. Scans come in capture order. True when kept.
-  bool Offer(std::int64_t stamp_ns, const robotio::Pose2D& pose, const robotio::PointList& scan);
+  // `odometry`: the wheels' and gyro's pose at the same time, for the odometry edges.
+  bool Offer(std::int64_t stamp_ns, const robotio::Pose2D& pose, const robotio::PointList& scan,
+             const std::optional<robotio::Pose2D>& odometry = std::nullopt);
 
   // Finds the closures, optimises the graph and keeps the corrected keyframe poses.
   LoopClosureSummary Close();
@@ -144,10 +158,13 @@ class LoopClosing {
                                  // the correction CloseNewest() made at it, if any).
     robotio::Pose2D corrected;   // Best estimate: `pose` until a solve moves it.
     robotio::PointList scan;     // Base frame.
+    std::optional<robotio::Pose2D> odometry;  // Wheels and gyro, when offered.
   };
   // The older keyframe `centre`'s local map in its own frame.
   [[nodiscard]] robotio::PointList LocalMap(std::size_t centre) const;
   [[nodiscard]] PoseGraphEdge SequenceEdge(std::size_t to) const;  // From the one before.
+  // The same by odometry; none when off or either keyframe came without odometry.
+  [[nodiscard]] std::optional<PoseGraphEdge> OdometryEdge(std::size_t to) const;
   // Older keyframes to register keyframe `newer` against (old enough to make a loop,
   // within the search radius), best first.
   [[nodiscard]] std::vector<std::size_t> RevisitCandidates(std::size_t newer) const;
