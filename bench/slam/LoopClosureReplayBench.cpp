@@ -100,7 +100,8 @@ int main(int argc, char** argv) {
   if (trajectory->empty()) Fail(trajectory_file + ": no poses");
   const mapping::Trajectory2D poses = Planar(*trajectory);
   const mapping::Trajectory2D truth = Planar(reader->ground_truth());
-  // The wheels and gyro as SLAM's pass had them, for the odometry edges.
+  // The wheels and gyro for the odometry edges, dead-reckoned with the default motion
+  // model (a pass run with other --motion settings had slightly other odometry).
   const mapping::Trajectory2D odometry =
       mapping::DeadReckon(reader->odometry(), reader->imu(), mapping::MotionModelConfig{});
 
@@ -137,6 +138,8 @@ int main(int argc, char** argv) {
       frames.push_back(std::move(*frame));
     }
     const robotio::Pose2D pose = mapping::PoseAt(poses, stamp);
+    const std::optional<robotio::Pose2D> at_odometry =
+        odometry.empty() ? std::nullopt : std::optional(mapping::PoseAt(odometry, stamp));
     // One scan for all settings that build it alike.
     robotio::PointList points;
     const mapping::SlamConfig* built_for = nullptr;
@@ -147,9 +150,7 @@ int main(int argc, char** argv) {
         points = RegisteredScan(frames, poses, rig, configs[c], mapping_config);
         built_for = &configs[c];
       }
-      closings[c].Offer(stamp, pose, points,
-                        odometry.empty() ? std::nullopt
-                                         : std::optional(mapping::PoseAt(odometry, stamp)));
+      closings[c].Offer(stamp, pose, points, at_odometry);
     }
     if (done % 500 == 0 || done == grouped.scans.size()) {
       std::fprintf(stderr, "\rscans %zu / %zu", done, grouped.scans.size());

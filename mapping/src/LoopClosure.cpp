@@ -17,6 +17,21 @@ double Distance(const robotio::Pose2D& a, const robotio::Pose2D& b) {
   return std::hypot(a.x - b.x, a.y - b.y);
 }
 
+// Keyframe `to` measured from the one before, with independent x/y and yaw noise.
+PoseGraphEdge EdgeFromPrevious(std::size_t to, const robotio::Pose2D& measured, double sigma_m,
+                               double sigma_rad) {
+  PoseGraphEdge edge;
+  edge.from = to - 1;
+  edge.to = to;
+  edge.measured = measured;
+  edge.information = Eigen::Vector3d(1.0 / (sigma_m * sigma_m), 1.0 / (sigma_m * sigma_m),
+                                     1.0 / (sigma_rad * sigma_rad))
+                         .asDiagonal();
+  return edge;
+}
+
+double Driven(const robotio::Pose2D& step) { return std::hypot(step.x, step.y); }
+
 }  // namespace
 
 const char* LoopClosureOutcomeName(LoopClosureOutcome outcome) {
@@ -121,39 +136,24 @@ robotio::PointList LoopClosing::LocalMap(std::size_t centre) const {
 }
 
 PoseGraphEdge LoopClosing::SequenceEdge(std::size_t to) const {
-  PoseGraphEdge edge;
-  edge.from = to - 1;
-  edge.to = to;
   // Both in the frame SLAM placed the scans between them in.
-  edge.measured = keyframes_[to - 1].pose_after.Between(keyframes_[to].pose);
-  const double sigma_m = config_.sequence_sigma_m +
-                         config_.sequence_sigma_per_sqrt_m *
-                             std::sqrt(std::hypot(edge.measured.x, edge.measured.y));
-  const double sigma_rad =
+  const robotio::Pose2D measured = keyframes_[to - 1].pose_after.Between(keyframes_[to].pose);
+  return EdgeFromPrevious(
+      to, measured,
+      config_.sequence_sigma_m + config_.sequence_sigma_per_sqrt_m * std::sqrt(Driven(measured)),
       config_.sequence_sigma_rad +
-      config_.sequence_sigma_per_sqrt_rad * std::sqrt(std::abs(edge.measured.theta));
-  edge.information = Eigen::Vector3d(1.0 / (sigma_m * sigma_m), 1.0 / (sigma_m * sigma_m),
-                                     1.0 / (sigma_rad * sigma_rad))
-                         .asDiagonal();
-  return edge;
+          config_.sequence_sigma_per_sqrt_rad * std::sqrt(std::abs(measured.theta)));
 }
 
 std::optional<PoseGraphEdge> LoopClosing::OdometryEdge(std::size_t to) const {
   const auto& from_odometry = keyframes_[to - 1].odometry;
   const auto& to_odometry = keyframes_[to].odometry;
   if (config_.odometry_sigma_m <= 0.0 || !from_odometry || !to_odometry) return std::nullopt;
-  PoseGraphEdge edge;
-  edge.from = to - 1;
-  edge.to = to;
-  edge.measured = from_odometry->Between(*to_odometry);
-  const double sigma_m =
-      config_.odometry_sigma_m +
-      config_.odometry_sigma_per_sqrt_m * std::sqrt(std::hypot(edge.measured.x, edge.measured.y));
-  edge.information =
-      Eigen::Vector3d(1.0 / (sigma_m * sigma_m), 1.0 / (sigma_m * sigma_m),
-                      1.0 / (config_.odometry_sigma_rad * config_.odometry_sigma_rad))
-          .asDiagonal();
-  return edge;
+  const robotio::Pose2D measured = from_odometry->Between(*to_odometry);
+  return EdgeFromPrevious(
+      to, measured,
+      config_.odometry_sigma_m + config_.odometry_sigma_per_sqrt_m * std::sqrt(Driven(measured)),
+      config_.odometry_sigma_rad);
 }
 
 // The registrations of the local maps used lately (Close() walks the keyframes in
