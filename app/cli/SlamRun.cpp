@@ -169,7 +169,7 @@ robotio::Expected<SlamRunResult> RunSlam(const robotio::RecordingReader& reader,
     }
     if (loop_closing) {
       loop_closing->Offer(step.record.stamp_ns, step.record.pose, slam->last_registered_scan(),
-                          step.odometry);
+                          step.odometry, slam->heading_held_by_walls());
     }
     if (progress) progress(static_cast<double>(s + 1) / static_cast<double>(scans.size()));
   }

@@ -67,6 +67,9 @@ LoopClosureConfig ParseLoopClosureConfig(robotio::ConfigNode& node) {
   node.Read("sequence_sigma_per_sqrt_m", &config.sequence_sigma_per_sqrt_m, 0.0, 1.0);
   node.Read("sequence_sigma_rad", &config.sequence_sigma_rad, 1e-7, 1.0);
   node.Read("sequence_sigma_per_sqrt_rad", &config.sequence_sigma_per_sqrt_rad, 0.0, 1.0);
+  node.Read("held_sequence_sigma_rad", &config.held_sequence_sigma_rad, 1e-7, 1.0);
+  node.Read("held_sequence_sigma_per_sqrt_rad", &config.held_sequence_sigma_per_sqrt_rad, 0.0,
+            1.0);
   node.Read("odometry_sigma_m", &config.odometry_sigma_m, 0.0, 1.0);
   node.Read("odometry_sigma_per_sqrt_m", &config.odometry_sigma_per_sqrt_m, 0.0, 1.0);
   node.Read("odometry_sigma_rad", &config.odometry_sigma_rad, 1e-6, 10.0);
@@ -104,7 +107,8 @@ LoopClosing::LoopClosing(LoopClosureConfig config) : config_(std::move(config)) 
 
 bool LoopClosing::Offer(std::int64_t stamp_ns, const robotio::Pose2D& pose,
                         const robotio::PointList& scan,
-                        const std::optional<robotio::Pose2D>& odometry) {
+                        const std::optional<robotio::Pose2D>& odometry,
+                        bool heading_measured) {
   if (!keyframes_.empty()) {
     const robotio::Pose2D step = last_pose_.Between(pose);
     driven_since_keyframe_ += std::hypot(step.x, step.y);
@@ -114,7 +118,7 @@ bool LoopClosing::Offer(std::int64_t stamp_ns, const robotio::Pose2D& pose,
   const bool due = keyframes_.empty() || driven_since_keyframe_ >= config_.keyframe_distance_m ||
                    turned_since_keyframe_ >= config_.keyframe_angle_rad;
   if (!due || scan.empty()) return false;
-  keyframes_.push_back({stamp_ns, pose, pose, pose, scan, odometry});
+  keyframes_.push_back({stamp_ns, pose, pose, pose, scan, odometry, heading_measured});
   driven_since_keyframe_ = 0.0;
   turned_since_keyframe_ = 0.0;
   return true;
@@ -138,11 +142,14 @@ robotio::PointList LoopClosing::LocalMap(std::size_t centre) const {
 PoseGraphEdge LoopClosing::SequenceEdge(std::size_t to) const {
   // Both in the frame SLAM placed the scans between them in.
   const robotio::Pose2D measured = keyframes_[to - 1].pose_after.Between(keyframes_[to].pose);
+  const bool held = keyframes_[to - 1].heading_measured && keyframes_[to].heading_measured;
+  const double sigma_rad = held ? config_.held_sequence_sigma_rad : config_.sequence_sigma_rad;
+  const double sigma_per_sqrt_rad =
+      held ? config_.held_sequence_sigma_per_sqrt_rad : config_.sequence_sigma_per_sqrt_rad;
   return EdgeFromPrevious(
       to, measured,
       config_.sequence_sigma_m + config_.sequence_sigma_per_sqrt_m * std::sqrt(Driven(measured)),
-      config_.sequence_sigma_rad +
-          config_.sequence_sigma_per_sqrt_rad * std::sqrt(std::abs(measured.theta)));
+      sigma_rad + sigma_per_sqrt_rad * std::sqrt(std::abs(measured.theta)));
 }
 
 std::optional<PoseGraphEdge> LoopClosing::OdometryEdge(std::size_t to) const {

@@ -242,6 +242,12 @@ std::optional<double> SlamLoop::FuseWallHeading(const robotio::PointList& scan_b
   return measured;
 }
 
+bool SlamLoop::heading_held_by_walls() const {
+  return last_wall_stamp_ns_ &&
+         static_cast<double>(last_stamp_ns_ - *last_wall_stamp_ns_) * 1e-9 <=
+             config_.wall_heading.holds_heading_s;
+}
+
 bool SlamLoop::Acceptable(const RegistrationResult& result, const robotio::Pose2D& predicted,
                           const robotio::Pose2D& corrected, const Motion& since) const {
   if (!result.converged || result.inlier_ratio < config_.min_inlier_ratio ||
@@ -350,6 +356,7 @@ SlamStep SlamLoop::ProcessScan(const std::vector<robotio::DepthFrame>& frames,
   if (wall_heading_) {
     step.wall_heading_rad =
         FuseWallHeading(Transformed(scan_map, step.predicted.Inverse()), &step.pose);
+    if (step.wall_heading_rad) last_wall_stamp_ns_ = frames.front().stamp_ns;
   }
   step.register_s = SecondsSince(t);
   pose_ = step.pose;

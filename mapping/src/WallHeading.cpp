@@ -51,6 +51,7 @@ WallHeadingConfig ParseWallHeadingConfig(robotio::ConfigNode& node) {
   node.Read("min_aligned_cells", &config.min_aligned_cells, 1, 1'000'000);
   node.Read("min_aligned_share", &config.min_aligned_share, 0.0, 1.0);
   node.Read("learn_scans", &config.learn_scans, 1, 1'000'000);
+  node.Read("holds_heading_s", &config.holds_heading_s, 0.0, 3600.0);
   return config;
 }
 

@@ -361,6 +361,46 @@ TEST(LoopClosure, OdometryEdgesPutADistanceSlamGotWrongBackWhereItWasGotWrong) {
   EXPECT_LT(with, 0.04);
 }
 
+// Keyframes offered with their heading measured (the walls held it) keep that heading:
+// the closure of the drifted lap may move them, not turn them. Offered without, the
+// same closures turn them back by most of the drift (the heading was SLAM's to lose).
+TEST(LoopClosure, AHeadingOfferedAsMeasuredIsHeldByTheGraph) {
+  const robotio::PointList room = Room();
+  const std::vector<Pose2D> truth = LapOfTheRoom();
+  const std::vector<Pose2D> slam = Drifted(truth);
+  struct After {
+    double most_turned_rad = 0.0;  // Largest heading change any pose got from the closure.
+    double worst_heading_rad = 0.0;
+    std::size_t closed = 0;
+  };
+  auto close = [&](bool heading_measured) {
+    std::mt19937 noise(7);
+    LoopClosing closing(LoopClosureConfig{});
+    for (std::size_t k = 0; k < truth.size(); ++k) {
+      closing.Offer(Stamp(k), slam[k], Scan(room, truth[k], &noise), slam[k], heading_measured);
+    }
+    After after;
+    after.closed = closing.Close().Count(LoopClosureOutcome::kClosed);
+    for (std::size_t k = 0; k < truth.size(); ++k) {
+      const Pose2D corrected = closing.Correct(Stamp(k), slam[k]);
+      after.most_turned_rad = std::max(
+          after.most_turned_rad, std::abs(robotio::WrapAngle(corrected.theta - slam[k].theta)));
+      after.worst_heading_rad = std::max(
+          after.worst_heading_rad, std::abs(robotio::WrapAngle(corrected.theta - truth[k].theta)));
+    }
+    return after;
+  };
+  const After free = close(false);
+  const After held = close(true);
+  std::printf("closure turned the poses by up to %.4f rad free (%zu closures, worst heading "
+              "error %.4f rad), %.4f rad held (%zu, %.4f rad)\n",
+              free.most_turned_rad, free.closed, free.worst_heading_rad, held.most_turned_rad,
+              held.closed, held.worst_heading_rad);
+  EXPECT_GE(free.closed, 3u);
+  EXPECT_GT(free.most_turned_rad, 0.05);
+  EXPECT_LT(held.most_turned_rad, 0.1 * free.most_turned_rad);
+}
+
 TEST(LoopClosure, ReadsItsSettingsAndRejectsUnknownKeys) {
   auto parse = [](const std::string& text) {
     return robotio::ParseYamlText<LoopClosureConfig>(
@@ -380,6 +420,10 @@ TEST(LoopClosure, ReadsItsSettingsAndRejectsUnknownKeys) {
   ASSERT_TRUE(odometry.ok()) << odometry.error().message;
   EXPECT_DOUBLE_EQ(odometry->odometry_sigma_m, 0.001);
   EXPECT_DOUBLE_EQ(odometry->odometry_sigma_per_sqrt_m, 0.002);
+  const auto held = parse("held_sequence_sigma_rad: 0.0001\nheld_sequence_sigma_per_sqrt_rad: 0\n");
+  ASSERT_TRUE(held.ok()) << held.error().message;
+  EXPECT_DOUBLE_EQ(held->held_sequence_sigma_rad, 0.0001);
+  EXPECT_DOUBLE_EQ(held->held_sequence_sigma_per_sqrt_rad, 0.0);
   const auto refused = parse("keyframe_distance: 0.8\n");
   ASSERT_FALSE(refused.ok());
   EXPECT_NE(refused.error().message.find("loop.yaml"), std::string::npos);

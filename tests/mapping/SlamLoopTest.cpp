@@ -126,6 +126,7 @@ struct SlamRun {
   std::vector<SlamStep> steps;
   robotio::Trajectory estimate;
   robotio::Trajectory odometry_only;
+  std::vector<bool> heading_held;  // SlamLoop::heading_held_by_walls() after each scan.
 };
 
 // Scan `s` of the drive through `slam`; the scan's time and its odometry pose with it.
@@ -153,6 +154,7 @@ SlamRun RunSlam(const OfficeDrive& drive, const SlamConfig& config) {
     ScanOutcome outcome = ProcessDriveScan(drive, s, &slam);
     run.estimate.push_back(robotio::ToStampedPose(outcome.stamp_ns, outcome.step.pose));
     run.odometry_only.push_back(robotio::ToStampedPose(outcome.stamp_ns, outcome.odometry));
+    run.heading_held.push_back(slam.heading_held_by_walls());
     run.steps.push_back(std::move(outcome.step));
   }
   return run;
@@ -168,7 +170,7 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   ASSERT_NE(f, nullptr);
   std::fputs("reference: map\nmax_correction_per_rad: 0.05\ndegenerate_eigen_ratio: 0.1\n"
              "map_reference_surface_points: false\nregistration_max_depth_m: 3.5\n"
-             "registration: {trim_ratio: 0.8}\nwall_heading: {enabled: true, sigma_rad: 0.01}\n",
+             "registration: {trim_ratio: 0.8}\nwall_heading: {enabled: false, sigma_rad: 0.01, holds_heading_s: 4}\n",
              f);
   std::fclose(f);
   f = std::fopen(bad.c_str(), "w");
@@ -184,8 +186,10 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   EXPECT_FALSE(config->map_reference_surface_points);
   EXPECT_DOUBLE_EQ(config->registration_max_depth_m, 3.5);
   EXPECT_DOUBLE_EQ(config->registration.trim_ratio, 0.8);
-  EXPECT_TRUE(config->wall_heading.enabled);
+  EXPECT_TRUE(SlamConfig{}.wall_heading.enabled);  // The walls are on by default.
+  EXPECT_FALSE(config->wall_heading.enabled);
   EXPECT_DOUBLE_EQ(config->wall_heading.sigma_rad, 0.01);
+  EXPECT_DOUBLE_EQ(config->wall_heading.holds_heading_s, 4.0);
   EXPECT_DOUBLE_EQ(config->max_correction_per_m, SlamConfig{}.max_correction_per_m);
 
   const auto refused = LoadSlamConfig(bad);
@@ -205,10 +209,16 @@ TEST(SlamLoop, SettingsLoadFromAFileAndUnknownKeysAreRefused) {
   EXPECT_NE(upside_down.error().message.find("wall_heading.max_height_m"), std::string::npos)
       << upside_down.error().message;
 
-  // The shipped walls' settings: the walls on, loop closure holding the heading.
+  // The shipped settings: the walls on with loop closure holding the heading on every
+  // sequence edge; the walls off.
   const auto walls = LoadSlamConfig(Resource("slam/wall_heading.yaml"));
   ASSERT_TRUE(walls.ok()) << walls.error().message;
   EXPECT_TRUE(walls->wall_heading.enabled);
+  EXPECT_DOUBLE_EQ(walls->loop_closure.sequence_sigma_rad,
+                   SlamConfig{}.loop_closure.held_sequence_sigma_rad);
+  const auto no_walls = LoadSlamConfig(Resource("slam/no_walls.yaml"));
+  ASSERT_TRUE(no_walls.ok()) << no_walls.error().message;
+  EXPECT_FALSE(no_walls->wall_heading.enabled);
   EXPECT_LT(walls->loop_closure.sequence_sigma_rad, SlamConfig{}.loop_closure.sequence_sigma_rad);
   EXPECT_LT(walls->loop_closure.sequence_sigma_per_sqrt_rad,
             SlamConfig{}.loop_closure.sequence_sigma_per_sqrt_rad);
@@ -269,6 +279,7 @@ TEST(SlamLoop, TheWallsHoldTheHeadingWhereTheGyroDrifts) {
   SlamConfig config;
   config.odometry_sigma_per_sqrt_m = 0.05;
   config.heading_sigma_per_sqrt_s = 0.01;
+  config.wall_heading.enabled = false;
   const SlamRun without = RunSlam(drive, config);
   config.wall_heading.enabled = true;
   config.wall_heading.learn_scans = 10;
@@ -288,6 +299,19 @@ TEST(SlamLoop, TheWallsHoldTheHeadingWhereTheGyroDrifts) {
               measured, with.steps.size(), worst_without * 180.0 / M_PI,
               worst_with * 180.0 / M_PI, ate_without->ate_m.rmse, ate_with->ate_m.rmse);
   EXPECT_GT(measured, with.steps.size() / 2);
+  // Loop closure is told to hold the heading at every scan the walls measured, none before
+  // their first measurement, and never without them.
+  bool measured_yet = false;
+  for (std::size_t k = 0; k < with.steps.size(); ++k) {
+    measured_yet = measured_yet || with.steps[k].wall_heading_rad.has_value();
+    if (with.steps[k].wall_heading_rad) {
+      EXPECT_TRUE(with.heading_held[k]) << "scan " << k;
+    }
+    if (!measured_yet) {
+      EXPECT_FALSE(with.heading_held[k]) << "scan " << k;
+    }
+  }
+  EXPECT_EQ(std::count(without.heading_held.begin(), without.heading_held.end(), true), 0);
   EXPECT_LT(worst_with, worst_without);
   EXPECT_LT(ate_with->ate_m.rmse, ate_without->ate_m.rmse);
 }

@@ -108,7 +108,8 @@ void MappingWorker::Process(const std::vector<CapturedFrame>& batch) {
     // `step.pose` put it.
     if (loop_closing_ &&
         loop_closing_->Offer(frames[0]->depth.stamp_ns, step.pose,
-                             slam_->last_registered_scan(), odometry[0]) &&
+                             slam_->last_registered_scan(), odometry[0],
+                             slam_->heading_held_by_walls()) &&
         config_.slam.loop_closure.correct_while_running) {
       if (const auto correction = loop_closing_->CloseNewest()) {
         slam_->ApplyCorrection(*correction);

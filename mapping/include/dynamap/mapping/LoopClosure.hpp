@@ -56,6 +56,14 @@ struct LoopClosureConfig {
   double sequence_sigma_per_sqrt_m = 0.01;
   double sequence_sigma_rad = 0.0005;
   double sequence_sigma_per_sqrt_rad = 0.005;
+  // The same heading sigmas between two keyframes whose heading the walls measured
+  // (Offer's `heading_measured`, SlamConfig::wall_heading): that heading is known
+  // independently of the map, so a closure pulling the position must not turn the
+  // stretch between them. With the walls on and the sequence sigmas above, a closure
+  // turned the stretch the walls had held straight (office tour 0.047 m before loop
+  // closure, 0.068 after; 0.047 with these; docs/RESULTS.md).
+  double held_sequence_sigma_rad = 0.00002;
+  double held_sequence_sigma_per_sqrt_rad = 0.0002;
   // Odometry edges: between consecutive keyframes also the wheels' and gyro's relative
   // pose, when the keyframes were offered with their odometry pose. SLAM's sequence edges
   // carry what the registrations got wrong while the map ahead was new (a few cm along a
@@ -129,8 +137,12 @@ class LoopClosing {
   // kept as a keyframe when it is the first or the robot moved far enough since the
   // last. Scans come in capture order. True when kept.
   // `odometry`: the wheels' and gyro's pose at the same time, for the odometry edges.
+  // `heading_measured`: the heading of `pose` was measured independently of the map
+  // (SlamLoop::heading_held_by_walls()); the sequence edge between two such keyframes
+  // holds their relative heading (held_sequence_sigma_rad).
   bool Offer(std::int64_t stamp_ns, const robotio::Pose2D& pose, const robotio::PointList& scan,
-             const std::optional<robotio::Pose2D>& odometry = std::nullopt);
+             const std::optional<robotio::Pose2D>& odometry = std::nullopt,
+             bool heading_measured = false);
 
   // Finds the closures, optimises the graph and keeps the corrected keyframe poses.
   LoopClosureSummary Close();
@@ -159,6 +171,7 @@ class LoopClosing {
     robotio::Pose2D corrected;   // Best estimate: `pose` until a solve moves it.
     robotio::PointList scan;     // Base frame.
     std::optional<robotio::Pose2D> odometry;  // Wheels and gyro, when offered.
+    bool heading_measured = false;            // By the walls, as offered.
   };
   // The older keyframe `centre`'s local map in its own frame.
   [[nodiscard]] robotio::PointList LocalMap(std::size_t centre) const;

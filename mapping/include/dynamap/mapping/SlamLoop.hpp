@@ -173,6 +173,9 @@ class SlamLoop {
   [[nodiscard]] const SlamConfig& config() const { return config_; }
   // The last scan's points as registered (preprocessed, thinned, base frame at its time).
   [[nodiscard]] const robotio::PointList& last_registered_scan() const { return last_scan_; }
+  // The last scan's heading was measured independently of the map: the walls measured
+  // within wall_heading.holds_heading_s before it (LoopClosing::Offer's heading_measured).
+  [[nodiscard]] bool heading_held_by_walls() const;
   // Occupied static voxels near `around` (x/y within map_reference_radius_m, static
   // probability at least map_reference_min_probability), each as the mean of the scan
   // points seen in it (map_reference_surface_points) or as its centre, thinned to the
@@ -214,6 +217,7 @@ class SlamLoop {
   std::optional<double> FuseWallHeading(const robotio::PointList& scan_base,
                                         robotio::Pose2D* pose);
   std::optional<WallHeading> wall_heading_;        // When config_.wall_heading.enabled.
+  std::optional<std::int64_t> last_wall_stamp_ns_;  // Capture time the walls last measured.
   robotio::PointList previous_scan_map_;           // Last scan's points in the map frame.
   robotio::PointList last_scan_;                   // The same in the base frame.
   // Running mean of the scan points that fell in each leaf voxel (map frame).
