@@ -377,7 +377,8 @@ TEST(LoopClosure, AHeadingOfferedAsMeasuredIsHeldByTheGraph) {
     std::mt19937 noise(7);
     LoopClosing closing(LoopClosureConfig{});
     for (std::size_t k = 0; k < truth.size(); ++k) {
-      closing.Offer(Stamp(k), slam[k], Scan(room, truth[k], &noise), slam[k], heading_measured);
+      closing.Offer(Stamp(k), slam[k], Scan(room, truth[k], &noise), std::nullopt,
+                    heading_measured);
     }
     After after;
     after.closed = closing.Close().Count(LoopClosureOutcome::kClosed);
