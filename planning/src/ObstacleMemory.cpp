@@ -1,5 +1,6 @@
 #include "dynamap/planning/ObstacleMemory.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dynamap::planning {
@@ -27,7 +28,7 @@ void ObstacleMemory::Insert(const std::vector<Eigen::Vector2d>& points_base,
     const Eigen::Vector2d q(T_odom_base.x + c * p.x() - s * p.y(),
                             T_odom_base.y + s * p.x() + c * p.y());
     Remembered& cell = cells_[CellKey(q, config_.cell_m)];
-    if (stamp_ns >= cell.stamp_ns) cell = {q, stamp_ns};
+    if (stamp_ns >= cell.stamp_ns) cell = {q, stamp_ns, 0};
   }
 }
 
@@ -35,6 +36,26 @@ void ObstacleMemory::Forget(std::int64_t now_ns) {
   const auto keep_ns = static_cast<std::int64_t>(config_.keep_s * 1e9);
   for (auto it = cells_.begin(); it != cells_.end();) {
     it = now_ns - it->second.stamp_ns > keep_ns ? cells_.erase(it) : std::next(it);
+  }
+}
+
+void ObstacleMemory::Forget(std::int64_t now_ns, const robotio::Pose2D& T_odom_base,
+                            const InView& in_view) {
+  const auto keep_ns = static_cast<std::int64_t>(config_.keep_s * 1e9);
+  const auto keep_hidden_ns = static_cast<std::int64_t>(config_.keep_hidden_s * 1e9);
+  const double c = std::cos(T_odom_base.theta);
+  const double s = std::sin(T_odom_base.theta);
+  const double range_squared = config_.range_m * config_.range_m;
+  for (auto it = cells_.begin(); it != cells_.end();) {
+    Remembered& cell = it->second;
+    const Eigen::Vector2d d = cell.p_odom - Eigen::Vector2d(T_odom_base.x, T_odom_base.y);
+    // Beyond range_m it ages as if in view: the memory is for what is near the base.
+    const Eigen::Vector2d p_base(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
+    if (d.squaredNorm() <= range_squared && !in_view(p_base)) cell.hidden_ns = now_ns;
+    // In view for keep_s since it was last seen or hidden, or seen too long ago at all.
+    const bool unseen_in_view = now_ns - std::max(cell.stamp_ns, cell.hidden_ns) > keep_ns;
+    const bool too_old = now_ns - cell.stamp_ns > std::max(keep_ns, keep_hidden_ns);
+    it = unseen_in_view || too_old ? cells_.erase(it) : std::next(it);
   }
 }
 

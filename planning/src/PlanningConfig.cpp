@@ -80,6 +80,7 @@ void ReadGuard(robotio::ConfigNode& n, CollisionGuardConfig* c) {
 void ReadMemory(robotio::ConfigNode& n, ObstacleMemoryConfig* c) {
   n.Read("cell_m", &c->cell_m, 0.005, 1.0);
   n.Read("keep_s", &c->keep_s, 0.0, 600.0);
+  n.Read("keep_hidden_s", &c->keep_hidden_s, 0.0, 3600.0);
   n.Read("range_m", &c->range_m, 0.1, 20.0);
 }
 

@@ -1,8 +1,9 @@
 // The control worker against the simulator: a base whose map pose is 0.12 m off (as SLAM's
 // was at a mission's door contacts) follows a path through the middle of a 0.9 m doorway,
 // as the map has it. With what its Kinects saw kept in the odometry frame and the path
-// shifted off it, the footprint clears the door posts; without, it touches one. The map
-// guard checks the planner's grid on the way.
+// shifted off it, the footprint clears the door posts; without, it touches one; and it
+// still does after standing in the doorway, where it cannot see the posts. The map guard
+// checks the planner's grid on the way.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -57,14 +58,18 @@ struct Passage {
   double end_x_m = 0.0;   // True map x at the end (the doorway is at 2 m).
   double max_shift_m = 0.0;
   std::int64_t map_guard_stops = 0;
+  double stopped_in_doorway_x_m = 0.0;  // True map x where it stopped to wait (0: did not).
 };
 
 // The base drives a path `path_y_m` north of the middle of a doorway `width` wide, as the
 // map has it, with its map pose `map_error_m` north of the truth (negative: south); a
-// `squeezed` plan is one FindSqueezePath made.
+// `squeezed` plan is one FindSqueezePath made. With `wait_in_doorway_s`, the first plan
+// ends in the doorway's middle and the way on is planned that long after the base got
+// there; the memory keeps what no Kinect can see up to `keep_hidden_s`.
 Passage DriveThroughTheDoorway(bool shift_path, double width, double map_error_m,
                                double path_y_m = 0.0, double north_narrower_m = 0.0,
-                               double south_narrower_m = 0.0, bool squeezed = false) {
+                               double south_narrower_m = 0.0, bool squeezed = false,
+                               double wait_in_doorway_s = 0.0, double keep_hidden_s = 60.0) {
   auto world = robotio::sim::ParseWorld(DoorwayWorld(width), "doorway.yaml");
   auto rig = robotio::LoadRig(test::Resource("rigs/two_kinects.yaml"));
   auto robot = robotio::sim::LoadRobotConfig(test::Resource("robots/segway_rmp50.yaml"));
@@ -82,19 +87,26 @@ Passage DriveThroughTheDoorway(bool shift_path, double width, double map_error_m
   config.initial_still_s = 0.0;
   config.initial_turn_rad = 0.0;
   config.path_shift.enabled = shift_path;
+  config.memory.keep_hidden_s = keep_hidden_s;
   ControlWorker control(mediator, *rig, config);
   Plan plan;  // On the map, where the doorway's middle is on the start's line.
   plan.has_goal = true;
-  plan.goal_map = {4.0, 0.0};
+  plan.goal_map = {4.0, path_y_m};
   plan.path_map = {{0.0, path_y_m}, {4.0, path_y_m}};
   plan.map = DoorwayGrid(width, north_narrower_m, south_narrower_m);  // The map guard checks it.
   plan.squeezed = squeezed;
-  mediator.plan.Set(plan);
+  Plan to_doorway = plan;
+  to_doorway.goal_map = {2.0, path_y_m};
+  to_doorway.path_map = {{0.0, path_y_m}, {2.0, path_y_m}};
+  bool wait = wait_in_doorway_s > 0.0;
+  mediator.plan.Set(wait ? to_doorway : plan);
+  std::int64_t in_doorway_ns = -1;  // When the base stopped in the doorway.
 
   const Eigen::Vector2d map_error(0.0, map_error_m);  // Map pose minus truth.
   Passage passage;
   const double dt = 0.05;
-  for (int i = 1; i <= 400; ++i) {
+  const int steps = 400 + static_cast<int>(std::ceil((wait_in_doorway_s + 10.0) / dt));
+  for (int i = 1; i <= steps; ++i) {
     const std::int64_t now = robotio::SecondsToNanos(i * dt);
     const robotio::sim::SimOutput out = sim.AdvanceTo(now);
     mediator.odometry.Add(out.odometry, out.imu);
@@ -106,7 +118,17 @@ Passage DriveThroughTheDoorway(bool shift_path, double width, double map_error_m
     const robotio::Pose2D truth = sim.TruePose();
     mediator.pose_fix.Set(
         {now, {truth.x + map_error.x(), truth.y + map_error.y(), truth.theta}, odom->pose});
-    sim.SetCommand(control.Tick(now, dt));
+    const robotio::VelocityCommand command = control.Tick(now, dt);
+    sim.SetCommand(command);
+    if (wait && in_doorway_ns < 0 && truth.x > 1.7 && std::abs(command.v) < 1e-3) {
+      in_doorway_ns = now;
+      passage.stopped_in_doorway_x_m = truth.x;
+    }
+    if (wait && in_doorway_ns >= 0 &&
+        now - in_doorway_ns >= robotio::SecondsToNanos(wait_in_doorway_s)) {
+      mediator.plan.Set(plan);
+      wait = false;
+    }
     passage.max_shift_m = std::max(passage.max_shift_m, control.path_shift().norm());
     if (truth.x > 3.2) break;
   }
@@ -160,6 +182,22 @@ TEST(ControlThroughDoorway, OnASqueezedPathTheMapGuardAllowsTheSqueezeRadius) {
   EXPECT_EQ(squeezed.map_guard_stops, 0);
   EXPECT_EQ(squeezed.collisions, 0);
   EXPECT_GT(squeezed.end_x_m, 3.2) << "did not get through";
+}
+
+TEST(ControlThroughDoorway, WaitingInTheDoorwayTheBaseKeepsThePostsItCannotSee) {
+  // The base stops in a 0.9 m doorway with its map pose 0.2 m off and stands there 15 s:
+  // the posts beside it are nearer than the Kinects' 0.5 m and out of their view. Forgotten
+  // after the memory's 8 s, the shift goes with them and the base, moving on, touches a
+  // post (office seed 2 touched one seven times so); kept while unseen, it passes.
+  const Passage forgotten =
+      DriveThroughTheDoorway(true, 0.9, -0.2, 0.0, 0.0, 0.0, false, 15.0, 0.0);
+  EXPECT_NEAR(forgotten.stopped_in_doorway_x_m, 1.85, 0.1);
+  EXPECT_GE(forgotten.collisions, 1);
+  const Passage kept = DriveThroughTheDoorway(true, 0.9, -0.2, 0.0, 0.0, 0.0, false, 15.0);
+  EXPECT_NEAR(kept.stopped_in_doorway_x_m, 1.85, 0.1);
+  EXPECT_EQ(kept.collisions, 0);
+  EXPECT_GT(kept.end_x_m, 3.2) << "did not get through";
+  EXPECT_GT(kept.max_shift_m, 0.15);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // The odometry-frame memory of robot-height points: placement, range, one point per cell,
-// forgetting.
+// forgetting (only while a point could be seen again).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -50,6 +50,62 @@ TEST(ObstacleMemory, ForgetsWhatWasNotSeenAgainWithinItsKeepTime) {
   ASSERT_EQ(near.size(), 1u);
   EXPECT_NEAR(near[0].y(), 1.0, 1e-9);
   memory.Forget(14 * kSecond);
+  EXPECT_EQ(memory.size(), 0u);
+}
+
+TEST(ObstacleMemory, APointOutOfViewIsKeptUntilItHasBeenInViewForItsKeepTime) {
+  ObstacleMemoryConfig config;
+  config.keep_s = 8.0;
+  config.keep_hidden_s = 60.0;
+  ObstacleMemory memory(config);
+  // A post 1 m ahead, then 0.4 m beside the base standing in a doorway: out of view.
+  memory.Insert({{1.0, 0.0}}, {}, 0);
+  const robotio::Pose2D in_doorway{1.0, -0.4, 0.0};
+  const auto ahead_only = [](const Eigen::Vector2d& p) { return p.x() > 0.5; };
+  for (int s = 1; s <= 30; ++s) memory.Forget(s * kSecond, in_doorway, ahead_only);
+  EXPECT_EQ(memory.size(), 1u) << "forgotten out of view";
+  const std::vector<Eigen::Vector2d> beside = memory.PointsNear(in_doorway, 1.0);
+  ASSERT_EQ(beside.size(), 1u);
+  EXPECT_NEAR(beside[0].y(), 0.4, 1e-9);
+  // The base backs off until the post is ahead again: it ages from then on.
+  const robotio::Pose2D backed_off{0.0, -0.4, 0.0};
+  memory.Forget(31 * kSecond, backed_off, ahead_only);
+  EXPECT_EQ(memory.size(), 1u);
+  memory.Forget(38 * kSecond, backed_off, ahead_only);  // Last hidden at 30 s.
+  EXPECT_EQ(memory.size(), 1u);
+  memory.Forget(38 * kSecond + 1, backed_off, ahead_only);
+  EXPECT_EQ(memory.size(), 0u);
+}
+
+TEST(ObstacleMemory, OutOfViewAPointIsKeptAtMostItsHiddenKeepTime) {
+  ObstacleMemoryConfig config;
+  config.keep_s = 8.0;
+  config.keep_hidden_s = 20.0;
+  ObstacleMemory memory(config);
+  memory.Insert({{0.0, 0.5}}, {}, 0);
+  const auto nothing_in_view = [](const Eigen::Vector2d&) { return false; };
+  memory.Forget(20 * kSecond, {}, nothing_in_view);
+  EXPECT_EQ(memory.size(), 1u);
+  memory.Forget(20 * kSecond + 1, {}, nothing_in_view);
+  EXPECT_EQ(memory.size(), 0u);
+  // A hidden keep time under keep_s keeps nothing longer than keep_s, in view or not.
+  config.keep_hidden_s = 0.0;
+  ObstacleMemory plain(config);
+  plain.Insert({{0.0, 0.5}}, {}, 0);
+  plain.Forget(8 * kSecond, {}, nothing_in_view);
+  EXPECT_EQ(plain.size(), 1u);
+  plain.Forget(8 * kSecond + 1, {}, nothing_in_view);
+  EXPECT_EQ(plain.size(), 0u);
+}
+
+TEST(ObstacleMemory, BeyondItsRangeAPointAgesAsIfInView) {
+  ObstacleMemoryConfig config;
+  config.keep_s = 8.0;
+  config.range_m = 2.5;
+  ObstacleMemory memory(config);
+  memory.Insert({{1.0, 0.0}}, {}, 0);
+  const auto nothing_in_view = [](const Eigen::Vector2d&) { return false; };
+  memory.Forget(8 * kSecond + 1, {5.0, 0.0, 0.0}, nothing_in_view);  // 4 m from the base.
   EXPECT_EQ(memory.size(), 0u);
 }
 

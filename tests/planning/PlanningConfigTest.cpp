@@ -16,7 +16,8 @@ TEST(PlanningConfig, ReadsOverridesAndKeepsDefaults) {
       "planner: astar\n"
       "targets: {strategy: nearest-frontier, blacklist: {max_failures: 3, last_try: false}}\n"
       "coverage: {inspection_distance_m: 2.0}\n"
-      "guard: {footprint_radius_m: 0.4}\n");
+      "guard: {footprint_radius_m: 0.4}\n"
+      "memory: {keep_hidden_s: 30}\n");
   ASSERT_TRUE(config) << config.error().message;
   EXPECT_EQ(config->planner, "astar");
   EXPECT_EQ(config->targets.strategy, "nearest-frontier");
@@ -24,6 +25,8 @@ TEST(PlanningConfig, ReadsOverridesAndKeepsDefaults) {
   EXPECT_FALSE(config->targets.blacklist.last_try);
   EXPECT_DOUBLE_EQ(config->coverage.inspection_distance_m, 2.0);
   EXPECT_DOUBLE_EQ(config->guard.footprint_radius_m, 0.4);
+  EXPECT_DOUBLE_EQ(config->memory.keep_hidden_s, 30.0);
+  EXPECT_DOUBLE_EQ(config->memory.keep_s, ObstacleMemoryConfig{}.keep_s);
   EXPECT_DOUBLE_EQ(config->cost.robot_radius_m, CostFieldConfig{}.robot_radius_m);
 }
 

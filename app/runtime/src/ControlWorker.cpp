@@ -20,6 +20,7 @@ ControlWorker::ControlWorker(Mediator& mediator, robotio::Rig rig, ControlWorker
       follower_(config.follower),
       stall_(config.stall),
       memory_(config.memory),
+      view_(rig_, config.guard.min_height_m, config.guard.max_height_m),
       shift_(config.path_shift) {}
 
 void ControlWorker::TakeNewFrames(std::int64_t now_ns) {
@@ -42,7 +43,13 @@ void ControlWorker::TakeNewFrames(std::int64_t now_ns) {
       memory_.Insert(frame_points_[i], *odom, frame->value.stamp_ns);
     }
   }
-  memory_.Forget(now_ns);
+  // A point the Kinects cannot see from where the base is now (beside it, behind it, too
+  // near) is not forgotten for going unseen.
+  if (const auto odom = mediator_.odometry.Latest()) {
+    memory_.Forget(now_ns, odom->pose, [this](const Eigen::Vector2d& p) { return view_.Sees(p); });
+  } else {
+    memory_.Forget(now_ns);
+  }
 }
 
 robotio::Pose2D ControlWorker::PoseOnPath(const Plan* plan, const robotio::Pose2D& pose,

@@ -2,8 +2,8 @@
 // time, checks the newest raw depth frames with the collision guard (it never waits on SLAM
 // or planning), follows the newest planned path, and publishes the velocity command. What
 // the frames showed at robot height is remembered for a few seconds in the odometry frame
-// (planning::ObstacleMemory), and the path is shifted off it where SLAM's map pose is off
-// the map (planning::PathShift).
+// (planning::ObstacleMemory; longer where no Kinect can see it again), and the path is
+// shifted off it where SLAM's map pose is off the map (planning::PathShift).
 #pragma once
 
 #include <array>
@@ -17,6 +17,7 @@
 #include "dynamap/planning/ObstacleMemory.hpp"
 #include "dynamap/planning/PathFollower.hpp"
 #include "dynamap/planning/PathShift.hpp"
+#include "dynamap/planning/FieldOfView.hpp"
 #include "dynamap/planning/StallDetector.hpp"
 #include "dynamap/robotio/Rig.hpp"
 
@@ -86,6 +87,7 @@ class ControlWorker {
   planning::PathFollower follower_;
   planning::StallDetector stall_;
   planning::ObstacleMemory memory_;
+  planning::FieldOfView view_;  // Where the Kinects see: what the memory may forget.
   planning::PathShift shift_;
   std::array<std::uint64_t, kMaxKinects> frame_version_{};  // Last frame taken per Kinect.
   std::array<std::vector<Eigen::Vector2d>, kMaxKinects> frame_points_;  // Its points, base.
