@@ -11,6 +11,17 @@ namespace {
 
 constexpr std::int64_t kSecond = 1'000'000'000;
 
+// keep_s 8 s, and the given hidden keep time and range.
+ObstacleMemoryConfig KeepConfig(double keep_hidden_s, double range_m = 2.5) {
+  ObstacleMemoryConfig config;
+  config.keep_s = 8.0;
+  config.keep_hidden_s = keep_hidden_s;
+  config.range_m = range_m;
+  return config;
+}
+
+bool NothingInView(const Eigen::Vector2d& /*p_base*/) { return false; }
+
 TEST(ObstacleMemory, APointSeenAheadIsBesideTheBaseAfterItDroveAndTurned) {
   ObstacleMemory memory;
   // A post 1 m ahead and 0.45 m to the left of the base at the odometry origin.
@@ -54,10 +65,7 @@ TEST(ObstacleMemory, ForgetsWhatWasNotSeenAgainWithinItsKeepTime) {
 }
 
 TEST(ObstacleMemory, APointOutOfViewIsKeptUntilItHasBeenInViewForItsKeepTime) {
-  ObstacleMemoryConfig config;
-  config.keep_s = 8.0;
-  config.keep_hidden_s = 60.0;
-  ObstacleMemory memory(config);
+  ObstacleMemory memory(KeepConfig(60.0));
   // A post 1 m ahead, then 0.4 m beside the base standing in a doorway: out of view.
   memory.Insert({{1.0, 0.0}}, {}, 0);
   const robotio::Pose2D in_doorway{1.0, -0.4, 0.0};
@@ -78,34 +86,25 @@ TEST(ObstacleMemory, APointOutOfViewIsKeptUntilItHasBeenInViewForItsKeepTime) {
 }
 
 TEST(ObstacleMemory, OutOfViewAPointIsKeptAtMostItsHiddenKeepTime) {
-  ObstacleMemoryConfig config;
-  config.keep_s = 8.0;
-  config.keep_hidden_s = 20.0;
-  ObstacleMemory memory(config);
+  ObstacleMemory memory(KeepConfig(20.0));
   memory.Insert({{0.0, 0.5}}, {}, 0);
-  const auto nothing_in_view = [](const Eigen::Vector2d&) { return false; };
-  memory.Forget(20 * kSecond, {}, nothing_in_view);
+  memory.Forget(20 * kSecond, {}, NothingInView);
   EXPECT_EQ(memory.size(), 1u);
-  memory.Forget(20 * kSecond + 1, {}, nothing_in_view);
+  memory.Forget(20 * kSecond + 1, {}, NothingInView);
   EXPECT_EQ(memory.size(), 0u);
   // A hidden keep time under keep_s keeps nothing longer than keep_s, in view or not.
-  config.keep_hidden_s = 0.0;
-  ObstacleMemory plain(config);
+  ObstacleMemory plain(KeepConfig(0.0));
   plain.Insert({{0.0, 0.5}}, {}, 0);
-  plain.Forget(8 * kSecond, {}, nothing_in_view);
+  plain.Forget(8 * kSecond, {}, NothingInView);
   EXPECT_EQ(plain.size(), 1u);
-  plain.Forget(8 * kSecond + 1, {}, nothing_in_view);
+  plain.Forget(8 * kSecond + 1, {}, NothingInView);
   EXPECT_EQ(plain.size(), 0u);
 }
 
 TEST(ObstacleMemory, BeyondItsRangeAPointAgesAsIfInView) {
-  ObstacleMemoryConfig config;
-  config.keep_s = 8.0;
-  config.range_m = 2.5;
-  ObstacleMemory memory(config);
+  ObstacleMemory memory(KeepConfig(60.0, 2.5));
   memory.Insert({{1.0, 0.0}}, {}, 0);
-  const auto nothing_in_view = [](const Eigen::Vector2d&) { return false; };
-  memory.Forget(8 * kSecond + 1, {5.0, 0.0, 0.0}, nothing_in_view);  // 4 m from the base.
+  memory.Forget(8 * kSecond + 1, {5.0, 0.0, 0.0}, NothingInView);  // 4 m from the base.
   EXPECT_EQ(memory.size(), 0u);
 }
 
