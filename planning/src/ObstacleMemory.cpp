@@ -33,10 +33,7 @@ void ObstacleMemory::Insert(const std::vector<Eigen::Vector2d>& points_base,
 }
 
 void ObstacleMemory::Forget(std::int64_t now_ns) {
-  const auto keep_ns = static_cast<std::int64_t>(config_.keep_s * 1e9);
-  for (auto it = cells_.begin(); it != cells_.end();) {
-    it = now_ns - it->second.stamp_ns > keep_ns ? cells_.erase(it) : std::next(it);
-  }
+  Forget(now_ns, {}, [](const Eigen::Vector2d& /*p_base*/) { return true; });
 }
 
 void ObstacleMemory::Forget(std::int64_t now_ns, const robotio::Pose2D& T_odom_base,

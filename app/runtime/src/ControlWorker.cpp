@@ -44,11 +44,9 @@ void ControlWorker::TakeNewFrames(std::int64_t now_ns) {
     }
   }
   // A point the Kinects cannot see from where the base is now (beside it, behind it, too
-  // near) is not forgotten for going unseen.
+  // near) is not forgotten for going unseen. Without odometry nothing was remembered.
   if (const auto odom = mediator_.odometry.Latest()) {
     memory_.Forget(now_ns, odom->pose, [this](const Eigen::Vector2d& p) { return view_.Sees(p); });
-  } else {
-    memory_.Forget(now_ns);
   }
 }
 

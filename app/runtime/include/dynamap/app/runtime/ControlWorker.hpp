@@ -14,10 +14,10 @@
 #include "dynamap/app/runtime/Mediator.hpp"
 #include "dynamap/planning/CollisionGuard.hpp"
 #include "dynamap/planning/CostField.hpp"
+#include "dynamap/planning/FieldOfView.hpp"
 #include "dynamap/planning/ObstacleMemory.hpp"
 #include "dynamap/planning/PathFollower.hpp"
 #include "dynamap/planning/PathShift.hpp"
-#include "dynamap/planning/FieldOfView.hpp"
 #include "dynamap/planning/StallDetector.hpp"
 #include "dynamap/robotio/Rig.hpp"
 
