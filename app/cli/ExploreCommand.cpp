@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include "cli/CommandSupport.hpp"
 #include "cli/DeviceRecording.hpp"
@@ -96,6 +97,19 @@ runtime::MissionConfig ConfigFor(const ExploreOptions& options) {
   return config;
 }
 
+// A mission can finish with frontier regions it passed over: say so, with where they are.
+void PrintFrontiersLeft(const runtime::MissionReport& report) {
+  const auto print = [](const char* why, const std::vector<Eigen::Vector2d>& regions) {
+    if (regions.empty()) return;
+    std::printf("%zu frontier region%s %s, left unexplored at", regions.size(),
+                regions.size() == 1 ? "" : "s", why);
+    for (const Eigen::Vector2d& p : regions) std::printf(" (%.1f, %.1f)", p.x(), p.y());
+    std::printf(" m (map frame; crosses in map2d.png)\n");
+  };
+  print("no viewpoint reaches", report.unreachable_frontiers);
+  print("blacklisted after failed tries", report.blacklisted_frontiers);
+}
+
 void Run(const ExploreOptions& options) {
   const runtime::MissionConfig config = ConfigFor(options);
   std::optional<robotio::hardware::RecordingDevices> devices;
@@ -175,6 +189,7 @@ void Run(const ExploreOptions& options) {
                   report->path_length_m, static_cast<long long>(report->frames_processed),
                   static_cast<long long>(report->guard_stops));
     progress.Finish(summary);
+    PrintFrontiersLeft(*report);
     std::printf("results: %s (report.json, map2d.png, map.ot, static.bt, dynamic.bt, ...)\n",
                 config.out_dir.c_str());
     if (const auto error = (*runtime)->device_error()) {
@@ -194,6 +209,7 @@ void Run(const ExploreOptions& options) {
                 report->path_length_m, report->ate_rmse_m, report->static_accuracy,
                 report->dynamic_accuracy, static_cast<long long>(report->collisions));
   progress.Finish(summary);
+  PrintFrontiersLeft(*report);
   std::printf("results: %s (report.json, map2d.png, map.ot, static.bt, dynamic.bt, ...)\n",
               config.out_dir.c_str());
 }

@@ -287,6 +287,7 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
   for (const Region& region : Regions(map, frontier, min_frontier, &decision.frontier_regions)) {
     if (blacklist_.IsBlacklisted(region.center, now_s)) {
       ++decision.blacklisted_regions;
+      decision.blacklisted_frontiers.push_back(region.center);
       continue;
     }
     // Far enough to see the unseen floor beyond the frontier; nearer only where there is
@@ -328,6 +329,7 @@ TargetDecision TargetPlanner::Plan(const GridMap& map, const TraversalGrid& grid
     }
     if (!vp.found) {
       ++decision.unreachable_regions;
+      decision.unreachable_frontiers.push_back(region.center);
       continue;
     }
     TargetCandidate c;

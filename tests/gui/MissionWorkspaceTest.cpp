@@ -238,6 +238,37 @@ class MissionWorkspaceTest : public QObject {
     QVERIFY(image.pixel(1, 0) != image.pixel(0, 1));  // unknown differs from navigable
   }
 
+  void FrontierRegionsPassedOverAreCrossedWhereTheyLie() {
+    auto grid = std::make_shared<planning::GridMap>(40, 40, 0.05);  // 2 x 2 m from (0, 0).
+    for (int y = 0; y < 40; ++y) {
+      for (int x = 0; x < 40; ++x) grid->Set({x, y}, planning::CellState::kNavigable);
+    }
+    GridView view;
+    view.resize(200, 200);  // 100 px per metre, no margin.
+    GridScene scene;
+    scene.grid = grid;
+    scene.pose = {0.2, 0.2, 0.0};
+    scene.unreachable_frontiers = {{1.5, 1.5}};  // North-east: pixel (150, 50).
+    scene.blacklisted_frontiers = {{0.5, 1.5}};  // North-west: pixel (50, 50).
+    view.SetScene(scene);
+    const QImage image = view.grab().toImage();
+    const auto count = [&image](int cx, int cy, bool red) {
+      int n = 0;
+      for (int y = cy - 8; y <= cy + 8; ++y) {
+        for (int x = cx - 8; x <= cx + 8; ++x) {
+          const QRgb p = image.pixel(x, y);
+          n += red ? (qRed(p) > 180 && qGreen(p) < 90 && qBlue(p) < 90)
+                   : (qBlue(p) > 110 && qRed(p) < 70 && qGreen(p) < 100);
+        }
+      }
+      return n;
+    };
+    QVERIFY(count(150, 50, true) > 15);
+    QVERIFY(count(50, 50, false) > 15);
+    QCOMPARE(count(150, 150, true), 0);  // Nothing south-east: north is up.
+    QCOMPARE(count(50, 50, true), 0);
+  }
+
  private:
   static void ConfigureShortMission(MissionWorkspace& workspace, const QString& out,
                                     double seconds) {

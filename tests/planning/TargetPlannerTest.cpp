@@ -205,6 +205,10 @@ TEST(TargetPlanner, BlacklistedRegionsAreTriedOnceMoreBeforeGoingHome) {
   ASSERT_GE(regions.size(), 2u);
   ASSERT_EQ(d.kind, TargetKind::kReturnToStart);  // Every region banned: home.
   EXPECT_EQ(d.blacklisted_regions, static_cast<int>(regions.size()));
+  // Named for the report.
+  ASSERT_EQ(d.blacklisted_frontiers.size(), regions.size());
+  EXPECT_TRUE(std::is_permutation(regions.begin(), regions.end(), d.blacklisted_frontiers.begin()));
+  EXPECT_TRUE(d.unreachable_frontiers.empty());
   EXPECT_EQ(planner.LiftBansForALastTry(d, 30.0), static_cast<int>(regions.size()));
   d = planner.Plan(map, grid, robot, home, nullptr, 30.0);
   ASSERT_EQ(d.kind, TargetKind::kFrontier);  // One more try each ...
@@ -244,6 +248,10 @@ TEST(TargetPlanner, UnreachableFrontierIsNotATarget) {
       TargetPlanner(NoInspection(), kRes).Plan(map, grid, {20, 24}, {12, 24}, nullptr, 0.0);
   EXPECT_EQ(d.unreachable_regions, 1);
   EXPECT_EQ(d.kind, TargetKind::kReturnToStart);
+  // Named for the report: the east opening's region, beyond the wall.
+  ASSERT_EQ(d.unreachable_frontiers.size(), 1u);
+  EXPECT_GT(d.unreachable_frontiers[0].x, 40);
+  EXPECT_TRUE(d.blacklisted_frontiers.empty());
 }
 
 TEST(TargetPlanner, FullyExploredMapMeansReturnToStartThenDone) {

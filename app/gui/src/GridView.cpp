@@ -79,6 +79,14 @@ void GridView::paintEvent(QPaintEvent*) {
   painter.setPen(QPen(QColor(20, 90, 200), 1.0));
   painter.setBrush(QColor(90, 170, 255));
   for (const auto& c : scene_.candidates) painter.drawEllipse(to_px(c.x(), c.y()), 3.5, 3.5);
+  const auto cross = [&](const Eigen::Vector2d& c, const QColor& colour) {
+    const QPointF p = to_px(c.x(), c.y());
+    painter.setPen(QPen(colour, 2.5));
+    painter.drawLine(p + QPointF(-6, -6), p + QPointF(6, 6));
+    painter.drawLine(p + QPointF(-6, 6), p + QPointF(6, -6));
+  };
+  for (const auto& c : scene_.unreachable_frontiers) cross(c, QColor(220, 30, 30));
+  for (const auto& c : scene_.blacklisted_frontiers) cross(c, QColor(20, 50, 150));
   if (scene_.path.size() > 1) {
     QPainterPath path(to_px(scene_.path.front().x(), scene_.path.front().y()));
     for (const auto& p : scene_.path) path.lineTo(to_px(p.x(), p.y()));

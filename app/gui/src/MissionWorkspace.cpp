@@ -130,6 +130,8 @@ void MissionWorkspace::OnSnapshot() {
   scene.trail = s.trail;
   scene.path = s.path;
   scene.candidates = s.candidates;
+  scene.unreachable_frontiers = s.unreachable_frontiers;
+  scene.blacklisted_frontiers = s.blacklisted_frontiers;
   scene.has_goal = s.has_goal;
   scene.goal = s.goal;
   grid_->SetScene(std::move(scene));

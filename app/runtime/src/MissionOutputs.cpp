@@ -60,13 +60,21 @@ robotio::Status WriteEnlargedWithScaleBar(const cv::Mat& image, const planning::
   });
 }
 
+// [[x, y], ...] rounded to the millimetre.
+nlohmann::json Points(const std::vector<Eigen::Vector2d>& points) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const Eigen::Vector2d& p : points) {
+    list.push_back({std::round(p.x() * 1e3) / 1e3, std::round(p.y() * 1e3) / 1e3});
+  }
+  return list;
+}
+
 }  // namespace
 
 robotio::Status WriteMapPicture(const planning::GridMap& grid,
                                 const std::vector<robotio::Pose2D>& estimated,
                                 const std::vector<robotio::Pose2D>& truth,
-                                const std::vector<Eigen::Vector2d>& targets,
-                                const std::string& file) {
+                                const PlannerMarks& marks, const std::string& file) {
   cv::Mat image(grid.height, grid.width, CV_8UC3);
   for (int y = 0; y < grid.height; ++y) {
     for (int x = 0; x < grid.width; ++x) {
@@ -94,9 +102,17 @@ robotio::Status WriteMapPicture(const planning::GridMap& grid,
   }();
   DrawPath(big, scaled, truth, cv::Scalar(60, 170, 60));
   DrawPath(big, scaled, estimated, cv::Scalar(0, 140, 255));
-  for (const auto& t : targets) {
+  for (const auto& t : marks.targets) {
     cv::drawMarker(big, Pixel(scaled, t.x(), t.y()), cv::Scalar(200, 0, 200), cv::MARKER_DIAMOND,
                    10, 2);
+  }
+  for (const auto& t : marks.unreachable_frontiers) {
+    cv::drawMarker(big, Pixel(scaled, t.x(), t.y()), cv::Scalar(0, 0, 220),
+                   cv::MARKER_TILTED_CROSS, 14, 2);
+  }
+  for (const auto& t : marks.blacklisted_frontiers) {
+    cv::drawMarker(big, Pixel(scaled, t.x(), t.y()), cv::Scalar(140, 40, 0),
+                   cv::MARKER_TILTED_CROSS, 14, 2);
   }
   cv::circle(big, Pixel(scaled, 0.0, 0.0), 6, cv::Scalar(0, 0, 220), 2, cv::LINE_AA);
   // Scale bar: 1 m.
@@ -247,6 +263,8 @@ robotio::Status WriteReportJson(const MissionReport& r, const std::string& extra
       {"blocked_plans", r.blocked_plans},
       {"squeezed_plans", r.squeezed_plans},
       {"last_try_regions", r.last_try_regions},
+      {"frontiers_left", {{"unreachable", Points(r.unreachable_frontiers)},
+                          {"blacklisted", Points(r.blacklisted_frontiers)}}},
       {"planner_median_ms", r.plan_median_ms},
       {"planner_p95_ms", r.plan_p95_ms},
       {"map_insert_median_ms", r.insert_median_ms},

@@ -379,6 +379,8 @@ MissionSnapshot MissionRuntime::Snapshot() const {
     s.goal = plan->value.goal_map;
     s.path = plan->value.path_map;
     s.candidates = plan->value.frontier_targets_map;
+    s.unreachable_frontiers = plan->value.unreachable_frontiers_map;
+    s.blacklisted_frontiers = plan->value.blacklisted_frontiers_map;
   }
   for (const auto& slot : m.latest_depth) {
     if (auto frame = slot.Get()) s.depth.push_back(frame->value);
@@ -425,6 +427,10 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
   r.blocked_plans = m.counters.blocked_plans.load();
   r.squeezed_plans = m.counters.squeezed_plans.load();
   r.last_try_regions = m.counters.last_try_regions.load();
+  if (const auto plan = m.plan.Get()) {
+    r.unreachable_frontiers = plan->value.unreachable_frontiers_map;
+    r.blacklisted_frontiers = plan->value.blacklisted_frontiers_map;
+  }
   r.plan_median_ms = Percentile(planning_->plan_ms(), 0.5);
   r.plan_p95_ms = Percentile(planning_->plan_ms(), 0.95);
   r.insert_median_ms = mapping_->median_insert_ms();
@@ -507,7 +513,9 @@ robotio::Expected<MissionReport> MissionRuntime::Finish() {
       world_ ? write("groundtruth.tum", robotio::WriteTumTrajectory(truth, out + "/groundtruth.tum"))
              : robotio::Status(robotio::Ok{}),
       write("map2d.png", WriteMapPicture(mapping_->grid(), ToPoses(estimate), ToPoses(truth),
-                                         Snapshot().candidates, out + "/map2d.png")),
+                                         {Snapshot().candidates, r.unreachable_frontiers,
+                                          r.blacklisted_frontiers},
+                                         out + "/map2d.png")),
       write("map2d.pgm", WriteRosMap(mapping_->grid(), out + "/map2d.pgm", out + "/map2d.yaml")),
   };
   if (r.files.back() == "map2d.pgm") r.files.push_back("map2d.yaml");

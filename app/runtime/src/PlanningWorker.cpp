@@ -110,6 +110,12 @@ void PlanningWorker::PlanOnce(double now_s) {
     plan.frontier_targets_map.emplace_back(grid.CenterX(candidate.viewpoint.x),
                                            grid.CenterY(candidate.viewpoint.y));
   }
+  for (const planning::GridIndex& c : decision.unreachable_frontiers) {
+    plan.unreachable_frontiers_map.emplace_back(grid.CenterX(c.x), grid.CenterY(c.y));
+  }
+  for (const planning::GridIndex& c : decision.blacklisted_frontiers) {
+    plan.blacklisted_frontiers_map.emplace_back(grid.CenterX(c.x), grid.CenterY(c.y));
+  }
   if (decision.kind == planning::TargetKind::kDone) {
     mediator_.counters.exploration_done = true;
     mediator_.counters.returned_to_start = true;

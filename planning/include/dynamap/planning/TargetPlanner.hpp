@@ -72,6 +72,10 @@ struct TargetDecision {
   int frontier_regions = 0;                // Regions found before dropping small ones.
   int unreachable_regions = 0;             // Kept regions without a reachable viewpoint.
   int blacklisted_regions = 0;             // Regions skipped for the blacklist.
+  // The frontier regions among those two (their centre cells): what a "done" leaves
+  // unexplored, for the operator to look at.
+  std::vector<GridIndex> unreachable_frontiers;
+  std::vector<GridIndex> blacklisted_frontiers;
 };
 
 class TargetPlanner {

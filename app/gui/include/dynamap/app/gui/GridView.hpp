@@ -1,6 +1,6 @@
 // The 2D view of a mission: the projected grid (planning::GridMap; navigable, obstacle,
-// hole, unknown), the trail, the planned path, the target candidates, the current goal and
-// the robot, north up and scaled to fit. Painted from plain values of a snapshot.
+// hole, unknown), the trail, the planned path, the target candidates, the frontier regions
+// passed over, the current goal and the robot, north up and scaled to fit. Painted from plain values of a snapshot.
 #pragma once
 
 #include <Eigen/Core>
@@ -20,6 +20,9 @@ struct GridScene {
   std::vector<robotio::Pose2D> trail;             // Path driven, map frame.
   std::vector<Eigen::Vector2d> path;              // Planned path, m, map frame.
   std::vector<Eigen::Vector2d> candidates;        // Target viewpoints, m, map frame.
+  // Frontier regions the planner passed over (centres, m, map frame), drawn as crosses.
+  std::vector<Eigen::Vector2d> unreachable_frontiers;  // No viewpoint reachable: red.
+  std::vector<Eigen::Vector2d> blacklisted_frontiers;  // Given up after failed tries: blue.
   bool has_goal = false;
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();  // m, map frame.
 };

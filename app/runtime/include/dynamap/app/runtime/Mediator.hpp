@@ -54,6 +54,9 @@ struct Plan {
   // (planning::FindSqueezePath): the map guard measures with it as well.
   bool squeezed = false;
   std::vector<Eigen::Vector2d> frontier_targets_map;      // Candidate viewpoints, m.
+  // Frontier regions passed over (centres, m): no viewpoint reachable, or blacklisted.
+  std::vector<Eigen::Vector2d> unreachable_frontiers_map;
+  std::vector<Eigen::Vector2d> blacklisted_frontiers_map;
   double plan_ms = 0.0;                                   // Wall time of this plan.
   std::shared_ptr<const planning::GridMap> map;           // Grid the plan was made on.
   std::shared_ptr<const planning::TraversalGrid> traversal;  // Its inflated cost grid.

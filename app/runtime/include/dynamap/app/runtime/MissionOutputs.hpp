@@ -15,13 +15,21 @@
 
 namespace dynamap::app::runtime {
 
+// What the planner had on the map when the mission ended (m, map frame).
+struct PlannerMarks {
+  std::vector<Eigen::Vector2d> targets;                // Candidate viewpoints.
+  std::vector<Eigen::Vector2d> unreachable_frontiers;  // Regions no viewpoint reaches.
+  std::vector<Eigen::Vector2d> blacklisted_frontiers;  // Regions given up after failed tries.
+};
+
 // Navigable white, obstacles black, holes blue, unknown grey; the true path green (when
-// known), the estimated path orange, targets and the goal marked; 1 px per cell, north up.
+// known), the estimated path orange, the start circled red; target candidates magenta
+// diamonds, frontier regions passed over as crosses (unreachable red, blacklisted dark
+// blue); 2 px per cell, north up.
 [[nodiscard]] robotio::Status WriteMapPicture(const planning::GridMap& grid,
                                               const std::vector<robotio::Pose2D>& estimated,
                                               const std::vector<robotio::Pose2D>& truth,
-                                              const std::vector<Eigen::Vector2d>& targets,
-                                              const std::string& file);
+                                              const PlannerMarks& marks, const std::string& file);
 
 // Where the surfaces were seen closely (surface_coverage): the projected map faded, and
 // each cell holding visible surface samples coloured by the share inspected, green all,

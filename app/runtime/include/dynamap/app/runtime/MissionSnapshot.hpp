@@ -29,6 +29,10 @@ struct MissionSnapshot {
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();
   std::vector<Eigen::Vector2d> path;
   std::vector<Eigen::Vector2d> candidates;
+  // Frontier regions the planner passed over (centres, m): no viewpoint it can reach, or
+  // blacklisted after failed tries. What a finished exploration leaves unexplored.
+  std::vector<Eigen::Vector2d> unreachable_frontiers;
+  std::vector<Eigen::Vector2d> blacklisted_frontiers;
   std::vector<robotio::DepthFrame> depth;   // Newest frame per Kinect.
   double distance_m = 0.0;                  // Odometry distance driven.
   std::int64_t frames_delivered = 0;
@@ -78,6 +82,10 @@ struct MissionReport {
   std::int64_t blocked_plans = 0;        // Plans that stood waiting for people to move on.
   std::int64_t squeezed_plans = 0;       // Paths found only with the squeeze radius.
   std::int64_t last_try_regions = 0;     // Blacklisted regions let off for a last try.
+  // The last plan's frontier regions passed over (centres, m, map frame): what the
+  // exploration left unexplored when it ended.
+  std::vector<Eigen::Vector2d> unreachable_frontiers;
+  std::vector<Eigen::Vector2d> blacklisted_frontiers;
   double plan_median_ms = 0.0;
   double plan_p95_ms = 0.0;
   double insert_median_ms = 0.0;
