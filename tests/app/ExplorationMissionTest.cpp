@@ -169,10 +169,11 @@ TEST(ExplorationMission, SlamRegistersBothKinectsOfAnInstantAsOneScan) {
 // person pacing in front of room A's door had every target beyond it blacklisted in turn.
 // Completion is reported, not asserted: the planner is often still inspecting at 200 s.
 // DA came out 0.968-0.983 in sixteen runs of this mission (three with seeds 2-4; alone,
-// three at a time, and beside the GUI tests), but 0.80 and 0.83 in two full ctest runs (the second with
-// 0.85 above the floor layer, where the other runs keep next to nothing), for a reason
-// not found: the bound sits below those and well above the regular update's 0.53 on the
-// same mission (docs/RESULTS.md), and the test prints where the points were kept.
+// three at a time, and beside the GUI tests), but 0.80 and 0.83 in two full ctest runs
+// (the second with 0.85 above the floor layer, where the other runs keep next to
+// nothing), for a reason not found: the bound sits below those and well above the
+// regular update's 0.53 on the same mission (docs/RESULTS.md), and the test prints where
+// the points were kept.
 TEST(ExplorationMission, ExploresTheSmallOffice) {
   const std::string out = test::ScratchDir();
   MissionConfig config = SmallOfficeMission(out);

@@ -1,6 +1,7 @@
 // The 2D view of a mission: the projected grid (planning::GridMap; navigable, obstacle,
 // hole, unknown), the trail, the planned path, the target candidates, the frontier regions
-// passed over, the current goal and the robot, north up and scaled to fit. Painted from plain values of a snapshot.
+// passed over, the current goal and the robot, north up and scaled to fit. Painted from
+// plain values of a snapshot.
 #pragma once
 
 #include <Eigen/Core>
