@@ -41,6 +41,7 @@ struct MapOptions {
   std::string log;
   std::string out;
   std::string poses = "slam";
+  std::string trajectory;  // TUM file of T_map_base poses to map with; "" = --poses.
   std::string reference;  // SLAM registration target (--poses slam); "" = the settings'.
   std::string slam;       // SLAM settings file (keys of mapping::SlamConfig); "" = defaults.
   std::string slam_odometry = "wheels";  // Or "groundtruth" (diagnosis, see SlamRunOptions).
@@ -66,6 +67,14 @@ void Check(const robotio::Status& status) {
 }
 
 robotio::Trajectory SelectPoses(const robotio::RecordingReader& reader, const MapOptions& o) {
+  if (!o.trajectory.empty()) {
+    auto trajectory = robotio::ReadTumTrajectory(o.trajectory);
+    if (!trajectory) FailCommand(kCommand, trajectory.error().message);
+    if (trajectory->empty()) {
+      FailCommand(kCommand, o.trajectory + ": no poses (expected lines 'timestamp tx ty tz qx qy qz qw')");
+    }
+    return *trajectory;
+  }
   if (o.poses == "groundtruth") {
     if (reader.ground_truth().empty()) {
       FailCommand(kCommand, reader.dir() + ": no groundtruth.txt; use --poses odometry");
@@ -253,7 +262,7 @@ void RunMap(const MapOptions& o) {
   // (its own dual map steers the dynamic-point filter); the map below is then built from
   // those poses like from any other pose source.
   std::optional<SlamRunResult> slam;
-  if (o.poses == "slam") slam = RunSlamPass(reader, o, config);
+  if (o.poses == "slam" && o.trajectory.empty()) slam = RunSlamPass(reader, o, config);
   const robotio::Trajectory poses = slam ? slam->frame_poses : SelectPoses(reader, o);
   mapping::DualMap map(config);
   const bool labelled = !reader.label_entries().empty();
@@ -324,7 +333,7 @@ void RunMap(const MapOptions& o) {
   nlohmann::json report = {
       {"command", "map"},
       {"log", reader.dir()},
-      {"poses", o.poses},
+      {"poses", o.trajectory.empty() ? o.poses : "trajectory"},
       {"rig", o.rig.empty() ? "recorded" : o.rig},
       {"update", mapping::UpdateModeName(config.update)},
       {"mapping_settings", o.mapping_file.empty() ? "defaults" : o.mapping_file},
@@ -337,6 +346,12 @@ void RunMap(const MapOptions& o) {
       {"static_occupied_voxels", static_points.size()},
       {"dynamic_occupied_voxels", dynamic_points.size()},
   };
+  if (!o.trajectory.empty()) {
+    report["trajectory"] = o.trajectory;
+    // How far the given poses are from the truth (no alignment, as for SLAM's).
+    const auto error = mapping::EvaluateTrajectory(reader.ground_truth(), poses, {});
+    report["ate_rmse_m"] = error ? nlohmann::json(error->ate_m.rmse) : nlohmann::json();
+  }
   if (slam) {
     Check(robotio::WriteTumTrajectory(slam->trajectory, (out / "trajectory.tum").string()));
     Check(robotio::WriteFileAtomically((out / "slam_scans.csv").string(),
@@ -448,6 +463,10 @@ void RegisterMapCommand(CLI::App& app) {
                   "Pose source: slam (odometry + gyro corrected by ICP), groundtruth, odometry")
       ->check(CLI::IsMember({"slam", "groundtruth", "odometry"}))
       ->capture_default_str();
+  map->add_option("--trajectory", options->trajectory,
+                  "Poses from a TUM trajectory file (T_map_base, e.g. a mission's loop-closed "
+                  "trajectory.tum or another SLAM system's) instead of --poses")
+      ->check(CLI::ExistingFile);
   map->add_option("--reference", options->reference,
                   "SLAM registration target: previous scan, map, or combined (map first; the "
                   "default unless --slam sets another)")
