@@ -13,6 +13,7 @@
 
 #include "cli/CommandSupport.hpp"
 #include "cli/DeviceRecording.hpp"
+#include "cli/FinalMap.hpp"
 #include "cli/Interrupt.hpp"
 #include "cli/ProgressLine.hpp"
 #include "dynamap/app/runtime/MissionRuntime.hpp"
@@ -40,6 +41,7 @@ struct ExploreOptions {
   std::string poses = "slam";
   int kinect_width = 320;
   bool record = false;
+  bool final_map = false;  // Map the recording again along the loop-closed trajectory.
   bool headless = false;
   bool device = false;          // The real robot instead of the simulator.
   std::string replay;           // A recording replayed through the mission instead.
@@ -71,7 +73,7 @@ runtime::MissionConfig ConfigFor(const ExploreOptions& options) {
   config.speed = options.speed;
   config.kinect_width = options.kinect_width;
   config.kinect_height = options.kinect_width * 3 / 4;
-  config.record = options.record;
+  config.record = options.record || (options.final_map && options.replay.empty());
   config.area_m = options.area_m;
   config.poses = options.poses == "odometry"      ? runtime::PoseSource::kOdometry
                  : options.poses == "groundtruth" ? runtime::PoseSource::kGroundTruth
@@ -108,6 +110,13 @@ void PrintFrontiersLeft(const runtime::MissionReport& report) {
   };
   print("no viewpoint reaches", report.unreachable_frontiers);
   print("blacklisted after failed tries", report.blacklisted_frontiers);
+}
+
+FinalMapRequest FinalMapRequestFor(const ExploreOptions& options,
+                                   const runtime::MissionConfig& config) {
+  const bool replayed = !options.replay.empty();
+  return {config.out_dir, replayed ? options.replay : config.out_dir + "/recording",
+          options.mapping, replayed ? options.rig : ""};
 }
 
 void Run(const ExploreOptions& options) {
@@ -190,6 +199,7 @@ void Run(const ExploreOptions& options) {
                   static_cast<long long>(report->guard_stops));
     progress.Finish(summary);
     PrintFrontiersLeft(*report);
+    if (options.final_map) BuildFinalMap(FinalMapRequestFor(options, config));
     std::printf("results: %s (report.json, map2d.png, map.ot, static.bt, dynamic.bt, ...)\n",
                 config.out_dir.c_str());
     if (const auto error = (*runtime)->device_error()) {
@@ -210,6 +220,7 @@ void Run(const ExploreOptions& options) {
                 report->dynamic_accuracy, static_cast<long long>(report->collisions));
   progress.Finish(summary);
   PrintFrontiersLeft(*report);
+  if (options.final_map) BuildFinalMap(FinalMapRequestFor(options, config));
   std::printf("results: %s (report.json, map2d.png, map.ot, static.bt, dynamic.bt, ...)\n",
               config.out_dir.c_str());
 }
@@ -273,6 +284,10 @@ void RegisterExploreCommand(CLI::App& app) {
       ->check(CLI::Range(80, 640));
   cmd->add_flag("--record", options->record, "Also write the run as a recording (recording/)")
       ->excludes(replay);
+  cmd->add_flag("--final-map", options->final_map,
+                "After the mission, map its recording again along the loop-closed "
+                "trajectory into final_map/ (as dynamap map --trajectory; records the run "
+                "unless it is a --replay)");
   cmd->add_flag("--headless", options->headless,
                 "Run without a window (explore always runs in the terminal; the GUI has its "
                 "own Mission workspace)");

@@ -229,7 +229,7 @@ std::string UnpackedRecording(const MapOptions& o) {
   return dir;
 }
 
-void RunMap(const MapOptions& o) {
+nlohmann::json RunMap(const MapOptions& o) {
   const auto start = Clock::now();
   std::error_code ec;
   fs::create_directories(o.out, ec);
@@ -408,10 +408,20 @@ void RunMap(const MapOptions& o) {
                          {"write", write_s},       {"total", Seconds(start)}};
   report["insert_scans_per_s"] = insert_s > 0.0 ? static_cast<double>(frames) / insert_s : 0.0;
   WriteJsonReport(kCommand, report, (out / "report.json").string());
-  std::printf("%s\n", report.dump(2).c_str());
+  return report;
 }
 
 }  // namespace
+
+nlohmann::json MapAlongTrajectory(const TrajectoryMapRequest& request) {
+  MapOptions o;
+  o.log = request.recording_dir;
+  o.trajectory = request.trajectory_file;
+  o.out = request.out_dir;
+  o.mapping_file = request.mapping_file;
+  o.rig = request.rig_file;
+  return RunMap(o);
+}
 
 robotio::Trajectory IntegrateWheelOdometry(const std::vector<robotio::OdometryReading>& odometry,
                                            double track_width_m) {
@@ -516,7 +526,7 @@ void RegisterMapCommand(CLI::App& app) {
     options->update_given = update->count() > 0;
     options->resolution_given = resolution->count() > 0;
     options->max_range_given = max_range->count() > 0;
-    RunMap(*options);
+    std::printf("%s\n", RunMap(*options).dump(2).c_str());
   });
 }
 

@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "dynamap/robotio/Readings.hpp"
@@ -12,6 +14,18 @@
 namespace dynamap::app {
 
 void RegisterMapCommand(CLI::App& app);
+
+struct TrajectoryMapRequest {
+  std::string recording_dir;
+  std::string trajectory_file;  // TUM, T_map_base.
+  std::string out_dir;
+  std::string mapping_file;  // "" = the default map settings.
+  std::string rig_file;      // "" = the recorded rig.
+};
+
+// What `dynamap map --log R --trajectory T --out O [--mapping M] [--rig G]` does: the map
+// files and report.json in `out_dir`; returns the report. Fails as that command does.
+nlohmann::json MapAlongTrajectory(const TrajectoryMapRequest& request);
 
 // Dead reckoning from the cumulative wheel distances alone (thesis 5.2.1, eq. 5.3, midpoint
 // heading per interval): T_map_base at every reading, identity at the first one.
