@@ -26,7 +26,8 @@ void BuildFinalMap(const FinalMapRequest& request) {
   std::ifstream in(report_file);
   nlohmann::json report = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
   if (!report.is_object()) {
-    FailCommand("explore", report_file + ": not the mission's JSON report; the final map is in " + out);
+    FailCommand("explore",
+                report_file + ": not the mission's JSON report; the final map is in " + out);
   }
   nlohmann::json figures = {{"dir", "final_map"}};
   for (const char* key : {"ate_rmse_m", "static_accuracy", "dynamic_accuracy",
@@ -35,6 +36,9 @@ void BuildFinalMap(const FinalMapRequest& request) {
     if (final_report.contains(key)) figures[key] = final_report[key];
   }
   report["final_map"] = figures;
+  if (report.contains("files") && report["files"].is_array()) {
+    report["files"].push_back("final_map");
+  }
   WriteJsonReport("explore", report, report_file);
 
   // Accuracy only where the recording has labels, surfaces only where it has a world.

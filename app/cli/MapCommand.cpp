@@ -71,7 +71,8 @@ robotio::Trajectory SelectPoses(const robotio::RecordingReader& reader, const Ma
     auto trajectory = robotio::ReadTumTrajectory(o.trajectory);
     if (!trajectory) FailCommand(kCommand, trajectory.error().message);
     if (trajectory->empty()) {
-      FailCommand(kCommand, o.trajectory + ": no poses (expected lines 'timestamp tx ty tz qx qy qz qw')");
+      FailCommand(kCommand, o.trajectory +
+                                ": no poses (expected lines 'timestamp tx ty tz qx qy qz qw')");
     }
     return *trajectory;
   }

@@ -29,6 +29,7 @@ recorded = sum(1 for name in ("depth.txt", "depth1.txt")
 assert final["frames"] == recorded, (final["frames"], recorded)
 figures = mission["final_map"]
 assert figures["dir"] == "final_map"
+assert "final_map" in mission["files"], mission["files"]
 for key in ("static_accuracy", "dynamic_accuracy", "static_map_precision",
             "static_map_completeness", "ate_rmse_m"):
     assert figures[key] == final[key], (key, figures[key], final[key])
