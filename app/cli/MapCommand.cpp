@@ -470,14 +470,15 @@ void RegisterMapCommand(CLI::App& app) {
                   "file; without odometry the camera is tracked by registration alone")
       ->required();
   map->add_option("--out", options->out, "Output directory")->required();
-  map->add_option("--poses", options->poses,
+  CLI::Option* poses = map->add_option("--poses", options->poses,
                   "Pose source: slam (odometry + gyro corrected by ICP), groundtruth, odometry")
       ->check(CLI::IsMember({"slam", "groundtruth", "odometry"}))
       ->capture_default_str();
   map->add_option("--trajectory", options->trajectory,
                   "Poses from a TUM trajectory file (T_map_base, e.g. a mission's loop-closed "
                   "trajectory.tum or another SLAM system's) instead of --poses")
-      ->check(CLI::ExistingFile);
+      ->check(CLI::ExistingFile)
+      ->excludes(poses);
   map->add_option("--reference", options->reference,
                   "SLAM registration target: previous scan, map, or combined (map first; the "
                   "default unless --slam sets another)")

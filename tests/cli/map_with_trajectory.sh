@@ -41,7 +41,13 @@ code=$?
 set -e
 [ "$code" -ne 0 ] || { echo "a malformed trajectory was accepted" >&2; exit 1; }
 case "$err" in
-  *"bad.tum"*"2"*) ;;
+  *"bad.tum: line 2:"*) ;;
   *) echo "unexpected error: $err" >&2; exit 1 ;;
 esac
 [ ! -e "$scratch/bad/report.json" ] || { echo "a refused map wrote a report" >&2; exit 1; }
+
+# --poses and --trajectory name two pose sources: refused rather than one silently ignored.
+if "$dynamap" map --log "$scratch/rec" --out "$scratch/both" --poses odometry \
+  --trajectory "$scratch/same.tum" >/dev/null 2>&1; then
+  echo "--poses together with --trajectory was accepted" >&2; exit 1
+fi
