@@ -87,6 +87,33 @@ TEST(ExplorationMission, AMissingRigFileIsNamed) {
       << runtime.error().message;
 }
 
+TEST(ExplorationMission, AFolderHoldingAnEarlierRunIsRefusedUntouched) {
+  const std::string out = test::ScratchDir();
+  for (const char* earlier : {"report.json", "map.ot", "recording"}) {
+    const std::string run = out + "/" + earlier + "_run";
+    fs::create_directories(run);
+    if (std::string(earlier) == "recording") {
+      fs::create_directories(run + "/recording");
+    } else {
+      std::ofstream(run + "/" + earlier) << "earlier";
+    }
+    const auto runtime = MissionRuntime::Create(SmallOfficeMission(run));
+    ASSERT_FALSE(runtime) << earlier;
+    EXPECT_EQ(runtime.error().message,
+              run + ": already holds a mission's results (" + earlier +
+                  "); give a new output folder");
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(run)) ++entries;
+    EXPECT_EQ(entries, 1u) << earlier;
+  }
+  std::string kept;
+  std::getline(std::ifstream(out + "/report.json_run/report.json"), kept);
+  EXPECT_EQ(kept, "earlier");
+  // An empty folder made beforehand (as scripts/demo does) is fine.
+  fs::create_directories(out + "/empty");
+  EXPECT_TRUE(MissionRuntime::Create(SmallOfficeMission(out + "/empty")));
+}
+
 TEST(ExplorationMission, MapsAreSavedPeriodicallyWhileTheMissionRuns) {
   const std::string out = test::ScratchDir();
   MissionConfig config = SmallOfficeMission(out);

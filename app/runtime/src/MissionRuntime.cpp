@@ -105,6 +105,14 @@ robotio::Expected<std::unique_ptr<MissionRuntime>> MissionRuntime::Prepare(
     return ok.error();
   }
   std::error_code ec;
+  // Two missions' files never mix: a folder holding an earlier run's results is refused
+  // before anything in it is touched.
+  for (const char* earlier : {"report.json", "map.ot", "recording"}) {
+    if (fs::exists(fs::path(config.out_dir) / earlier, ec)) {
+      return robotio::Error{config.out_dir + ": already holds a mission's results (" + earlier +
+                            "); give a new output folder"};
+    }
+  }
   fs::create_directories(config.out_dir, ec);
   if (ec) return robotio::Error{config.out_dir + ": cannot create the output folder"};
 
